@@ -1,0 +1,64 @@
+#include "boundary/wall_forces.hpp"
+
+#include <cmath>
+
+namespace orogen {
+
+void add_wall_forces(NeighborList& L, Discs& d, const std::vector<Wall>& walls,
+                     const ContactLaw& law, double dt) {
+  auto& wc = L.walls;
+  for (std::size_t k = 0; k < wc.size(); ++k) {
+    const auto& w = walls[wc.wall[k]];
+    const auto i = wc.disc[k];
+    wc.touching[k] = 0;
+    wc.at_limit[k] = 0;
+    double cx, cy;
+    const double dist2 = closest_point_on_segment(w, d.x[i], d.y[i], cx, cy);
+    const double r = d.radius[i];
+    if (dist2 >= r * r || dist2 == 0.0) { wc.xi[k] = 0; continue; }
+    const double dist = std::sqrt(dist2);
+    const double nx = (d.x[i] - cx) / dist, ny = (d.y[i] - cy) / dist;  // wall -> disc
+    const double tx = -ny, ty = nx;
+    const double delta = r - dist;
+    // Velocity of the disc's contact point (at -r n) relative to the wall's surface.
+    const double len = w.length();
+    const double ex = len > 0 ? (w.bx - w.ax) / len : 0, ey = len > 0 ? (w.by - w.ay) / len : 0;
+    const double wvx = w.vx + w.surface_speed * ex, wvy = w.vy + w.surface_speed * ey;
+    const double rvx = d.vx[i] - d.omega[i] * r * tx - wvx;
+    const double rvy = d.vy[i] - d.omega[i] * r * ty - wvy;
+    const double vn = rvx * nx + rvy * ny;  // > 0 when separating
+    const double vt = rvx * tx + rvy * ty;
+    const double gn = wc.gamma_n[k];
+    double fn = law.kn * delta - gn * vn;
+    if (fn < 0) fn = 0;
+    double ft = 0;
+    const double limit = w.mu * fn;
+    switch (w.friction) {
+      case WallFriction::Smooth:
+        wc.xi[k] = 0;
+        break;
+      case WallFriction::Rough:
+        wc.xi[k] += vt * dt;
+        ft = -law.ks * wc.xi[k] - law.tangential_damping_ratio * gn * vt;
+        if (std::fabs(ft) > limit) {
+          ft = std::copysign(limit, ft);
+          wc.xi[k] = -ft / law.ks;
+          wc.at_limit[k] = 1;
+        }
+        break;
+      case WallFriction::Traction:
+        ft = -w.traction_gamma * vt;
+        if (std::fabs(ft) > limit) {
+          ft = std::copysign(limit, ft);
+          wc.at_limit[k] = 1;
+        }
+        break;
+    }
+    wc.touching[k] = 1;
+    d.fx[i] += fn * nx + ft * tx;
+    d.fy[i] += fn * ny + ft * ty;
+    d.torque[i] += -r * ft;
+  }
+}
+
+}  // namespace orogen

@@ -1,0 +1,209 @@
+#include "contact/neighbor_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace orogen {
+namespace {
+
+struct Grid {
+  double x_lo = 0, y_lo = 0, cell = 1;
+  std::int64_t nx = 1, ny = 1;
+  std::int64_t cell_of(double x, double y) const {
+    auto cx = static_cast<std::int64_t>((x - x_lo) / cell);
+    auto cy = static_cast<std::int64_t>((y - y_lo) / cell);
+    cx = std::clamp<std::int64_t>(cx, 0, nx - 1);
+    cy = std::clamp<std::int64_t>(cy, 0, ny - 1);
+    return cy * nx + cx;
+  }
+};
+
+Grid make_grid(const Discs& d, double cell) {
+  Grid g;
+  double xl = std::numeric_limits<double>::max(), yl = xl, xh = -xl, yh = -xl;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    xl = std::min(xl, d.x[i]); xh = std::max(xh, d.x[i]);
+    yl = std::min(yl, d.y[i]); yh = std::max(yh, d.y[i]);
+  }
+  if (d.size() == 0) { xl = yl = 0; xh = yh = 1; }
+  // A few stray discs far away must not blow up the grid: grow cells past ~4 per disc.
+  const double max_cells = 4.0 * static_cast<double>(d.size()) + 64.0;
+  while (((xh - xl) / cell + 1) * ((yh - yl) / cell + 1) > max_cells) cell *= 1.5;
+  g.x_lo = xl; g.y_lo = yl; g.cell = cell;
+  g.nx = static_cast<std::int64_t>((xh - xl) / cell) + 1;
+  g.ny = static_cast<std::int64_t>((yh - yl) / cell) + 1;
+  return g;
+}
+
+// Mass that resists a contact on disc i: its body's mass, infinite for kinematic discs.
+double resisting_mass(const Discs& d, const Clusters& c, std::uint32_t i) {
+  if (!d.is_dynamic(i)) return std::numeric_limits<double>::infinity();
+  return d.cluster[i] >= 0 ? c.mass[static_cast<std::size_t>(d.cluster[i])] : d.mass[i];
+}
+
+double pair_mass(double ma, double mb) {
+  if (std::isinf(ma)) return mb;
+  if (std::isinf(mb)) return ma;
+  return ma * mb / (ma + mb);
+}
+
+// Sorts discs into cells (counting sort); returns disc indices in cell order and cell starts.
+void bin_discs(const Discs& d, const Grid& g, std::vector<std::uint32_t>& order,
+               std::vector<std::uint32_t>& cell_start) {
+  const std::size_t n = d.size();
+  const auto ncell = static_cast<std::size_t>(g.nx * g.ny);
+  std::vector<std::uint32_t> cell_of(n);
+  cell_start.assign(ncell + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    cell_of[i] = static_cast<std::uint32_t>(g.cell_of(d.x[i], d.y[i]));
+    ++cell_start[cell_of[i] + 1];
+  }
+  for (std::size_t k = 0; k < ncell; ++k) cell_start[k + 1] += cell_start[k];
+  order.resize(n);
+  std::vector<std::uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+}  // namespace
+
+BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std::vector<Wall>& walls,
+                               const ContactLaw& law, double dt, bool sort) {
+  BuildStats stats;
+  const std::size_t n = d.size();
+  std::int64_t max_id = 0;
+  double r_max = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    max_id = std::max(max_id, d.id[i]);
+    r_max = std::max(r_max, d.radius[i]);
+    if (!std::isfinite(d.x[i]) || !std::isfinite(d.y[i])) stats.finite = false;
+  }
+  if (!stats.finite) return stats;
+  for (auto id : L.id_first) max_id = std::max(max_id, id);
+  for (auto id : L.wall_disc_id) max_id = std::max(max_id, id);
+
+  // Index the old history by stable ids before indices change.
+  HistoryCarry pair_history, wall_history;
+  pair_history.index(L.id_first, L.id_second, L.xi, max_id);
+  {
+    std::vector<std::int64_t> wall_key(L.walls.wall.begin(), L.walls.wall.end());
+    wall_history.index(L.wall_disc_id, wall_key, L.walls.xi, max_id);
+  }
+
+  const Grid g = make_grid(d, 2.0 * r_max + L.skin);
+  std::vector<std::uint32_t> order, cell_start;
+  bin_discs(d, g, order, cell_start);
+  if (sort) {
+    d.permute(order);
+    relink_clusters(c, d);
+    for (std::size_t k = 0; k < n; ++k) order[k] = static_cast<std::uint32_t>(k);
+  }
+
+  // Pairs: each cell against itself and its four forward neighbours (E, NW, N, NE).
+  L.first.clear(); L.second.clear(); L.xi.clear(); L.gamma_n.clear(); L.gamma_s.clear();
+  L.id_first.clear(); L.id_second.clear();
+  auto consider = [&](std::uint32_t a, std::uint32_t b) {
+    if (d.cluster_id[a] >= 0 && d.cluster_id[a] == d.cluster_id[b]) return;
+    if (!d.is_dynamic(a) && !d.is_dynamic(b)) return;
+    const double dx = d.x[b] - d.x[a], dy = d.y[b] - d.y[a];
+    const double reach = d.radius[a] + d.radius[b] + L.skin;
+    const double dist2 = dx * dx + dy * dy;
+    if (dist2 >= reach * reach) return;
+    const double overlap = d.radius[a] + d.radius[b] - std::sqrt(dist2);
+    const double ratio = overlap / std::min(d.radius[a], d.radius[b]);
+    if (ratio > stats.max_overlap_ratio) { stats.max_overlap_ratio = ratio; stats.worst_a = a; stats.worst_b = b; }
+    if (d.id[a] > d.id[b]) std::swap(a, b);
+    const double m = pair_mass(resisting_mass(d, c, a), resisting_mass(d, c, b));
+    const double gn = law.gamma_n(m, dt);
+    L.first.push_back(a);
+    L.second.push_back(b);
+    L.id_first.push_back(d.id[a]);
+    L.id_second.push_back(d.id[b]);
+    L.xi.push_back(pair_history.find(d.id[a], d.id[b]));
+    L.gamma_n.push_back(gn);
+    L.gamma_s.push_back(law.tangential_damping_ratio * gn);
+  };
+  const std::int64_t neighbours[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+  for (std::int64_t cy = 0; cy < g.ny; ++cy) {
+    for (std::int64_t cx = 0; cx < g.nx; ++cx) {
+      const auto cell = static_cast<std::size_t>(cy * g.nx + cx);
+      for (auto s = cell_start[cell]; s < cell_start[cell + 1]; ++s) {
+        const auto a = order[s];
+        for (auto t = s + 1; t < cell_start[cell + 1]; ++t) consider(a, order[t]);
+        for (const auto& nb : neighbours) {
+          const std::int64_t ox = cx + nb[0], oy = cy + nb[1];
+          if (ox < 0 || ox >= g.nx || oy >= g.ny) continue;
+          const auto other = static_cast<std::size_t>(oy * g.nx + ox);
+          for (auto t = cell_start[other]; t < cell_start[other + 1]; ++t) consider(a, order[t]);
+        }
+      }
+    }
+  }
+
+  // Per-disc pair index in ascending pair order.
+  L.disc_start.assign(n + 1, 0);
+  for (std::size_t p = 0; p < L.size(); ++p) { ++L.disc_start[L.first[p] + 1]; ++L.disc_start[L.second[p] + 1]; }
+  for (std::size_t i = 0; i < n; ++i) L.disc_start[i + 1] += L.disc_start[i];
+  L.disc_entries.resize(2 * L.size());
+  {
+    std::vector<std::uint32_t> fill(L.disc_start.begin(), L.disc_start.end() - 1);
+    for (std::size_t p = 0; p < L.size(); ++p) {
+      L.disc_entries[fill[L.first[p]]++] = static_cast<std::uint32_t>(p << 1);
+      L.disc_entries[fill[L.second[p]]++] = static_cast<std::uint32_t>(p << 1 | 1u);
+    }
+  }
+
+  // Wall contacts: every disc within reach of each enabled wall, in wall then disc order.
+  L.walls.clear();
+  L.wall_disc_id.clear();
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    if (!walls[w].enabled) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!d.is_dynamic(i)) continue;
+      double cx, cy;
+      const double dist2 = closest_point_on_segment(walls[w], d.x[i], d.y[i], cx, cy);
+      const double reach = d.radius[i] + L.skin;
+      if (dist2 >= reach * reach) continue;
+      L.walls.wall.push_back(static_cast<std::uint32_t>(w));
+      L.walls.disc.push_back(static_cast<std::uint32_t>(i));
+      L.walls.xi.push_back(wall_history.find(d.id[i], static_cast<std::int64_t>(w)));
+      L.walls.gamma_n.push_back(law.gamma_n(resisting_mass(d, c, static_cast<std::uint32_t>(i)), dt));
+      L.walls.touching.push_back(0);
+      L.walls.at_limit.push_back(0);
+      L.wall_disc_id.push_back(d.id[i]);
+    }
+  }
+
+  L.x_ref = d.x;
+  L.y_ref = d.y;
+  L.wall_ax_ref.clear(); L.wall_ay_ref.clear(); L.wall_bx_ref.clear(); L.wall_by_ref.clear();
+  for (const auto& w : walls) {
+    L.wall_ax_ref.push_back(w.ax); L.wall_ay_ref.push_back(w.ay);
+    L.wall_bx_ref.push_back(w.bx); L.wall_by_ref.push_back(w.by);
+  }
+  ++L.builds;
+  L.valid = true;
+  return stats;
+}
+
+bool needs_rebuild(const NeighborList& L, const Discs& d, const std::vector<Wall>& walls) {
+  if (!L.valid || L.x_ref.size() != d.size() || L.wall_ax_ref.size() != walls.size()) return true;
+  double wall_move = 0;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const double a = std::hypot(walls[w].ax - L.wall_ax_ref[w], walls[w].ay - L.wall_ay_ref[w]);
+    const double b = std::hypot(walls[w].bx - L.wall_bx_ref[w], walls[w].by - L.wall_by_ref[w]);
+    wall_move = std::max(wall_move, std::max(a, b));
+  }
+  double max2 = 0;
+  const auto n = static_cast<std::ptrdiff_t>(d.size());
+#pragma omp parallel for schedule(static) reduction(max : max2)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const double dx = d.x[i] - L.x_ref[i], dy = d.y[i] - L.y_ref[i];
+    const double m2 = dx * dx + dy * dy;
+    // Written so that NaN forces a rebuild, where it is caught.
+    max2 = (m2 <= max2) ? max2 : (m2 == m2 ? m2 : std::numeric_limits<double>::infinity());
+  }
+  return std::sqrt(max2) + wall_move > 0.5 * L.skin;
+}
+
+}  // namespace orogen

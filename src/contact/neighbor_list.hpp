@@ -1,0 +1,57 @@
+#pragma once
+// Contact detection (MODEL §5): a uniform cell grid sorts discs into cells, a half Verlet
+// list of pairs closer than the sum of their radii plus a skin is built from neighbouring
+// cells, and the list is rebuilt only when some disc has moved more than half the skin.
+// Each pair carries its tangential spring history, which survives rebuilds (matched by the
+// discs' stable ids) and is dropped when the discs separate.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "boundary/wall.hpp"
+#include "contact/contact_law.hpp"
+#include "contact/history_carry.hpp"
+#include "particles/clusters.hpp"
+#include "particles/discs.hpp"
+
+namespace orogen {
+
+struct NeighborList {
+  double skin = 0.1;
+  // Pairs (first, second) by disc index; the first always has the lower stable id, so the
+  // sign of the history xi (measured along n rotated +90 degrees, n from first to second)
+  // means the same thing after every rebuild.
+  std::vector<std::uint32_t> first, second;
+  std::vector<double> xi;
+  std::vector<double> gamma_n, gamma_s;  // dashpot coefficients of the pair
+  std::vector<std::int64_t> id_first, id_second;  // stable ids, to carry history across rebuilds
+  // Per-disc index of its pairs, ascending pair order (entry = pair << 1 | is_second), so
+  // that forces can be summed per disc in a fixed order whatever the thread count.
+  std::vector<std::uint32_t> disc_start, disc_entries;
+  // Wall contacts (walls are few; discs within the skin of each wall).
+  WallContacts walls;
+  std::vector<std::int64_t> wall_disc_id;
+  // Positions at the last build, for the half-skin rebuild test.
+  std::vector<double> x_ref, y_ref;
+  std::vector<double> wall_ax_ref, wall_ay_ref, wall_bx_ref, wall_by_ref;
+  std::uint64_t builds = 0;
+  bool valid = false;
+
+  std::size_t size() const { return first.size(); }
+};
+
+struct BuildStats {
+  double max_overlap_ratio = 0;  // largest overlap divided by the smaller radius
+  std::uint32_t worst_a = 0, worst_b = 0;
+  bool finite = true;
+};
+
+// Re-orders discs in cell order (if sort is set), rebuilds pairs and wall contacts, carries
+// history across and records reference positions.
+BuildStats build_neighbor_list(NeighborList& list, Discs& discs, Clusters& clusters,
+                               const std::vector<Wall>& walls, const ContactLaw& law, double dt, bool sort);
+
+// Largest squared displacement since the last build, plus the largest wall movement.
+bool needs_rebuild(const NeighborList& list, const Discs& discs, const std::vector<Wall>& walls);
+
+}  // namespace orogen

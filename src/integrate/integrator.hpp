@@ -1,0 +1,21 @@
+#pragma once
+// Semi-implicit (symplectic) Euler, as in the thesis (MODEL §4): velocities from forces,
+// then positions from the new velocities, for free discs and for rigid cluster bodies.
+#include "particles/clusters.hpp"
+#include "particles/discs.hpp"
+
+namespace orogen {
+
+struct BodyForce {
+  double gx = 0.0, gy = -1.0;  // gravitational acceleration (tilted for inclined-plane problems)
+  double drag = 0.0;           // extra viscous drag rate (1/time), used only while settling
+};
+
+// Sums member disc forces onto each cluster (centre-of-mass force and torque about it).
+void gather_cluster_forces(Clusters& clusters, const Discs& discs);
+
+// Advances free discs and cluster bodies by dt and then places member discs on their bodies.
+// Kinematic discs and bodies move with their imposed velocity.
+void integrate(Discs& discs, Clusters& clusters, const BodyForce& body, double dt);
+
+}  // namespace orogen

@@ -1,0 +1,92 @@
+#include "particles/clusters.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace orogen {
+
+void Clusters::compact(std::span<const std::uint8_t> keep) {
+  for_each_array([&](std::string_view, auto& v) {
+    std::size_t w = 0;
+    for (std::size_t k = 0; k < v.size(); ++k)
+      if (keep[k]) v[w++] = v[k];
+    v.resize(w);
+  });
+}
+
+std::size_t make_cluster(Clusters& c, Discs& d, std::span<const std::size_t> idx, std::int64_t cluster_id) {
+  if (idx.empty() || idx.size() > static_cast<std::size_t>(kMaxClusterSize))
+    throw std::invalid_argument("a cluster holds 1 to 3 discs");
+  double m = 0, cx = 0, cy = 0, vx = 0, vy = 0;
+  for (auto i : idx) {
+    m += d.mass[i];
+    cx += d.mass[i] * d.x[i];
+    cy += d.mass[i] * d.y[i];
+    vx += d.mass[i] * d.vx[i];
+    vy += d.mass[i] * d.vy[i];
+  }
+  cx /= m; cy /= m; vx /= m; vy /= m;
+  double inertia = 0;
+  const std::size_t k = c.size();
+  std::array<std::int32_t, kMaxClusterSize> members{-1, -1, -1};
+  for (std::size_t n = 0; n < idx.size(); ++n) {
+    const auto i = idx[n];
+    const double dx = d.x[i] - cx, dy = d.y[i] - cy;
+    inertia += 0.5 * d.mass[i] * d.radius[i] * d.radius[i] + d.mass[i] * (dx * dx + dy * dy);
+    d.body_dx[i] = dx;  // body frame == world frame at theta = 0
+    d.body_dy[i] = dy;
+    d.theta[i] = 0;
+    d.cluster[i] = static_cast<std::int32_t>(k);
+    d.cluster_id[i] = cluster_id;
+    members[n] = static_cast<std::int32_t>(i);
+  }
+  c.x.push_back(cx); c.y.push_back(cy); c.theta.push_back(0);
+  c.vx.push_back(vx); c.vy.push_back(vy); c.omega.push_back(0);
+  c.fx.push_back(0); c.fy.push_back(0); c.torque.push_back(0);
+  c.mass.push_back(m); c.inv_mass.push_back(1.0 / m); c.inv_inertia.push_back(1.0 / inertia);
+  c.id.push_back(cluster_id);
+  c.motion.push_back(d.motion[idx[0]]);
+  c.members.push_back(members);
+  update_cluster_discs(c, d);
+  return k;
+}
+
+void relink_clusters(Clusters& c, Discs& d) {
+  // Cluster index from stable cluster id: clusters are kept sorted by id.
+  for (auto& m : c.members) m = {-1, -1, -1};
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (d.cluster_id[i] < 0) { d.cluster[i] = kNoCluster; continue; }
+    auto it = std::lower_bound(c.id.begin(), c.id.end(), d.cluster_id[i]);
+    if (it == c.id.end() || *it != d.cluster_id[i]) throw std::logic_error("disc names a missing cluster");
+    const auto k = static_cast<std::size_t>(it - c.id.begin());
+    d.cluster[i] = static_cast<std::int32_t>(k);
+    auto& slot = c.members[k];
+    // Members in ascending disc-id order so that force sums have a fixed order.
+    int n = 0;
+    while (n < kMaxClusterSize && slot[n] >= 0) ++n;
+    if (n == kMaxClusterSize) throw std::logic_error("cluster has too many discs");
+    slot[n] = static_cast<std::int32_t>(i);
+    for (int a = n; a > 0 && d.id[slot[a]] < d.id[slot[a - 1]]; --a) std::swap(slot[a], slot[a - 1]);
+  }
+}
+
+void update_cluster_discs(const Clusters& c, Discs& d) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const double cs = std::cos(c.theta[k]), sn = std::sin(c.theta[k]);
+    for (const auto i : c.members[k]) {
+      if (i < 0) break;
+      const double rx = cs * d.body_dx[i] - sn * d.body_dy[i];
+      const double ry = sn * d.body_dx[i] + cs * d.body_dy[i];
+      d.x[i] = c.x[k] + rx;
+      d.y[i] = c.y[k] + ry;
+      d.vx[i] = c.vx[k] - c.omega[k] * ry;
+      d.vy[i] = c.vy[k] + c.omega[k] * rx;
+      d.theta[i] = c.theta[k];
+      d.omega[i] = c.omega[k];
+    }
+  }
+}
+
+}  // namespace orogen

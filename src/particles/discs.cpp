@@ -1,0 +1,38 @@
+#include "particles/discs.hpp"
+
+#include <numbers>
+
+namespace orogen {
+
+std::size_t Discs::add(std::int64_t disc_id, double px, double py, double r) {
+  const double m = std::numbers::pi * r * r;
+  const double inertia = 0.5 * m * r * r;
+  x.push_back(px); y.push_back(py); vx.push_back(0); vy.push_back(0);
+  theta.push_back(0); omega.push_back(0);
+  fx.push_back(0); fy.push_back(0); torque.push_back(0);
+  radius.push_back(r); mass.push_back(m); inv_mass.push_back(1.0 / m); inv_inertia.push_back(1.0 / inertia);
+  id.push_back(disc_id); cluster_id.push_back(-1); cluster.push_back(kNoCluster);
+  body_dx.push_back(0); body_dy.push_back(0);
+  motion.push_back(static_cast<std::uint8_t>(Motion::Dynamic));
+  x0.push_back(px); y0.push_back(py); depth0.push_back(0);
+  return x.size() - 1;
+}
+
+void Discs::permute(std::span<const std::uint32_t> order) {
+  for_each_array([&](std::string_view, auto& v) {
+    std::remove_reference_t<decltype(v)> out(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
+    v.swap(out);
+  });
+}
+
+void Discs::compact(std::span<const std::uint8_t> keep) {
+  for_each_array([&](std::string_view, auto& v) {
+    std::size_t w = 0;
+    for (std::size_t k = 0; k < v.size(); ++k)
+      if (keep[k]) v[w++] = v[k];
+    v.resize(w);
+  });
+}
+
+}  // namespace orogen

@@ -1,0 +1,108 @@
+#include "world/world.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "boundary/wall_forces.hpp"
+
+namespace orogen {
+namespace {
+
+void check_build(const BuildStats& s, const World& w) {
+  if (!s.finite)
+    throw InstabilityError(fmt::format(
+        "simulation became unstable at step {} (t = {:.6g}): disc positions are no longer finite. "
+        "Likely cause: time step dt = {:.3g} too large for k_n = {:.3g} (stable limit {:.3g}), or an imposed "
+        "velocity too fast for the contact stiffness",
+        w.step, w.time, w.dt, w.law.kn, w.stable_dt()));
+  if (s.max_overlap_ratio > 0.5)
+    throw InstabilityError(fmt::format(
+        "simulation became unstable at step {} (t = {:.6g}): discs {} and {} overlap by {:.0f}% of the smaller "
+        "radius. Likely cause: time step dt = {:.3g} too large for k_n = {:.3g} (stable limit {:.3g}), k_n too "
+        "soft for the load, or an imposed velocity too fast for the contact stiffness",
+        w.step, w.time, w.discs.id[s.worst_a], w.discs.id[s.worst_b], 100 * s.max_overlap_ratio, w.dt,
+        w.law.kn, w.stable_dt()));
+}
+
+}  // namespace
+
+void World::advance() {
+  if (needs_rebuild(neighbors, discs, walls)) {
+    const bool sort = sort_every > 0 && neighbors.builds % static_cast<std::uint64_t>(sort_every) == 0;
+    check_build(build_neighbor_list(neighbors, discs, clusters, walls, law, dt, sort), *this);
+  }
+  compute_pair_forces(neighbors, discs, law, dt, scratch);
+  add_wall_forces(neighbors, discs, walls, law, dt);
+  integrate(discs, clusters, body, dt);
+  for (auto& w : walls) {
+    w.ax += w.vx * dt; w.bx += w.vx * dt;
+    w.ay += w.vy * dt; w.by += w.vy * dt;
+  }
+  ++step;
+  time = static_cast<double>(step) * dt;
+}
+
+std::size_t World::remove(std::span<const std::uint8_t> flags, RemovalReason reason) {
+  std::vector<std::uint8_t> gone_cluster(clusters.size(), 0);
+  for (std::size_t i = 0; i < discs.size(); ++i)
+    if (flags[i] && discs.cluster[i] >= 0) gone_cluster[static_cast<std::size_t>(discs.cluster[i])] = 1;
+  std::vector<std::uint8_t> keep(discs.size(), 1);
+  std::size_t removed = 0;
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    const bool gone = flags[i] || (discs.cluster[i] >= 0 && gone_cluster[static_cast<std::size_t>(discs.cluster[i])]);
+    if (!gone) continue;
+    keep[i] = 0;
+    ++removed;
+    removals.push_back({step, time, discs.id[i], discs.cluster_id[i], discs.x[i], discs.y[i], reason});
+  }
+  if (removed == 0) return 0;
+  discs.compact(keep);
+  for (auto& g : gone_cluster) g = !g;
+  clusters.compact(gone_cluster);
+  relink_clusters(clusters, discs);
+  neighbors.valid = false;
+  return removed;
+}
+
+std::size_t World::add_disc(double x, double y, double r) {
+  neighbors.valid = false;
+  return discs.add(next_disc_id++, x, y, r);
+}
+
+std::size_t World::add_cluster(std::span<const std::size_t> idx) {
+  neighbors.valid = false;
+  return make_cluster(clusters, discs, idx, next_cluster_id++);
+}
+
+double World::min_pair_mass() const {
+  double m_min = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < discs.size(); ++i) m_min = std::min(m_min, discs.mass[i]);
+  if (!std::isfinite(m_min)) m_min = std::numbers::pi * 0.35 * 0.35;
+  return 0.5 * m_min;
+}
+
+double World::stable_dt() const {
+  return 0.1 * 2.0 * std::numbers::pi * std::sqrt(min_pair_mass() / law.kn);
+}
+
+double World::kinetic_energy() const {
+  double e = 0;
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    if (discs.cluster[i] >= 0 || !discs.is_dynamic(i)) continue;
+    const double m = discs.mass[i];
+    e += 0.5 * m * (discs.vx[i] * discs.vx[i] + discs.vy[i] * discs.vy[i]) +
+         0.5 * discs.omega[i] * discs.omega[i] / discs.inv_inertia[i];
+  }
+  for (std::size_t k = 0; k < clusters.size(); ++k) {
+    if (clusters.motion[k] != static_cast<std::uint8_t>(Motion::Dynamic)) continue;
+    e += 0.5 * clusters.mass[k] * (clusters.vx[k] * clusters.vx[k] + clusters.vy[k] * clusters.vy[k]) +
+         0.5 * clusters.omega[k] * clusters.omega[k] / clusters.inv_inertia[k];
+  }
+  return e;
+}
+
+}  // namespace orogen
