@@ -1,1 +1,45 @@
-int main() { return 0; }
+// orogen: the command line front end. Each subcommand is a thin wrapper over the library.
+#include <CLI/CLI.hpp>
+
+#include "run/render_command.hpp"
+#include "run/runner.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Orogen: a discrete element model of orogenesis (Naylor 2004)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", OROGEN_VERSION);
+
+  orogen::RunOptions run;
+  std::string config_path, out = "out";
+  auto* run_cmd = app.add_subcommand("run", "run an experiment (no CONFIG: the built-in default)");
+  run_cmd->add_option("config", config_path, "TOML configuration file");
+  run_cmd->add_option("--out,-o", out, "output folder")->capture_default_str();
+  run_cmd->add_option("--set", run.overrides, "override a key: --set contact.mu=0.2 (repeatable)");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: run.threads, 0 = all cores)");
+  std::string resume_dir;
+  run_cmd->add_option("--resume", resume_dir, "continue the killed run in this folder");
+
+  orogen::RenderCommandOptions render;
+  std::string render_dir;
+  auto* render_cmd = app.add_subcommand("render", "draw the output steps of a run as PNG frames and an animation");
+  render_cmd->add_option("dir", render_dir, "run folder")->required();
+  render_cmd->add_option("--color", render.color, "horizons | cluster | field:NAME")->capture_default_str();
+  render_cmd->add_option("--width", render.width_px, "picture width in pixels")->capture_default_str();
+  render_cmd->add_option("--every", render.every, "draw every n-th output")->capture_default_str();
+  render_cmd->add_option("--fps", render.fps, "animation frames per second")->capture_default_str();
+  render_cmd->add_flag("!--no-animation", render.animation, "only the PNG frames");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (*run_cmd) {
+    if (!config_path.empty()) run.config = config_path;
+    if (!resume_dir.empty()) { run.resume = true; run.out = resume_dir; }
+    else run.out = out;
+    return orogen::run_command(run);
+  }
+  render.dir = render_dir;
+  return orogen::render_command(render);
+}

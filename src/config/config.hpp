@@ -1,0 +1,57 @@
+#pragma once
+// The run configuration: a TOML file plus --set overrides, checked strictly against the schema
+// (schema.hpp). Every mistake is a ConfigError naming where it came from, the key, the value
+// and what is allowed, so a bad run fails before it starts rather than after hours.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "config/schema.hpp"
+
+namespace orogen {
+
+// A user mistake in the configuration (file or command line).
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// "config error in SOURCE: KEY = VALUE: ALLOWED"; an empty key or value is left out.
+// SOURCE is a file path, "--set", or Config::source_of(key) for cross-key checks.
+ConfigError config_error(std::string_view source, std::string_view key, std::string_view value,
+                         std::string_view allowed);
+
+class Config {
+ public:
+  Config();  // every key at its default
+  // Parse `file` (if given), apply the "section.key=value" overrides in order (later wins,
+  // and they beat the file), fill defaults, validate. Throws ConfigError.
+  static Config load(const std::optional<std::filesystem::path>& file,
+                     const std::vector<std::string>& overrides);
+
+  // Typed getters; an unknown key or the wrong getter is a programming error (std::logic_error).
+  double get_float(std::string_view key) const;
+  std::int64_t get_int(std::string_view key) const;
+  bool get_bool(std::string_view key) const;
+  const std::string& get_string(std::string_view key) const;
+
+  // Whether the user gave the key (in the file or by --set) rather than taking the default.
+  bool was_set(std::string_view key) const;
+  // Where the key's value came from: the file path, "--set", or "default".
+  const std::string& source_of(std::string_view key) const;
+
+  // The fully resolved configuration as TOML, every key in schema order with its doc; loading
+  // it back gives the same configuration (floats round-trip exactly).
+  std::string to_toml() const;
+
+ private:
+  const ConfigValue& lookup(std::string_view key, KeyType type) const;
+
+  std::vector<ConfigValue> values_;   // one per schema() entry, same order
+  std::vector<std::string> sources_;  // "default", "--set" or the file path
+};
+
+}  // namespace orogen

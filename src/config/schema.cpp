@@ -1,0 +1,193 @@
+#include "config/schema.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <system_error>
+
+namespace orogen {
+namespace {
+
+// Builders keep the table below one line per key and make the value's type explicit (a bare
+// string literal in a variant could otherwise pick the wrong alternative).
+Bound gt(double v) { return {v, false}; }
+Bound ge(double v) { return {v, true}; }
+Bound le(double v) { return {v, true}; }
+constexpr std::nullopt_t none = std::nullopt;
+
+KeySpec real(std::string name, double def, std::optional<Bound> lo, std::optional<Bound> hi,
+             std::string doc) {
+  return {std::move(name), KeyType::Float, def, lo, hi, {}, std::move(doc)};
+}
+KeySpec integer(std::string name, std::int64_t def, std::optional<Bound> lo, std::string doc) {
+  return {std::move(name), KeyType::Int, def, lo, none, {}, std::move(doc)};
+}
+KeySpec boolean(std::string name, bool def, std::string doc) {
+  return {std::move(name), KeyType::Bool, def, none, none, {}, std::move(doc)};
+}
+KeySpec text(std::string name, std::string def, std::vector<std::string> choices, std::string doc) {
+  KeySpec k{std::move(name), KeyType::String, std::move(def), none, none, {}, std::move(doc)};
+  k.choices = std::move(choices);
+  return k;
+}
+
+// Bounds are written without a forced ".0": "> 0", "<= 1", ">= 0.14".
+std::string format_number(double x) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace
+
+std::string_view KeySpec::section() const {
+  std::string_view n = name;
+  return n.substr(0, n.find('.'));
+}
+
+std::string_view KeySpec::key() const {
+  std::string_view n = name;
+  return n.substr(n.find('.') + 1);
+}
+
+const std::vector<KeySpec>& schema() {
+  static const std::vector<KeySpec> table = {
+      text("run.experiment", "packing", {"packing"}, "what the run does"),
+      integer("run.seed", 1, ge(0), "seed of the packing generator"),
+      integer("run.threads", 0, ge(0), "OpenMP threads, 0 = all cores"),
+
+      text("particles.packing", "random_discs", {"hexagonal", "random_discs", "random_clusters"},
+           "how the layer is built: hexagonal discs, random discs or random rigid clusters"),
+      real("particles.d_min", 0.7, gt(0), le(1), "smallest disc diameter [d]"),
+      real("particles.d_max", 1.0, gt(0), le(1), "largest disc diameter [d]"),
+
+      real("layer.length", 100.0, gt(0), none, "length of the settled layer [d]"),
+      real("layer.thickness", 10.0, gt(0), none, "target thickness h0 of the settled layer [d]"),
+      real("layer.column_width_factor", 2.3, gt(0), none,
+           "surface columns are this many mean radii wide [-]"),
+
+      real("contact.kn", 10000.0, gt(0), none, "normal stiffness k_n [m g / d]"),
+      real("contact.ks_ratio", 0.5, gt(0), le(1), "tangential to normal stiffness k_s / k_n [-]"),
+      real("contact.mu", 0.3, ge(0), none, "inter-particle friction coefficient [-]"),
+      real("contact.mu_wall", 0.3, ge(0), none, "friction coefficient of rough walls [-]"),
+      real("contact.restitution", 0.2, ge(0.14), le(1), "normal coefficient of restitution [-]"),
+      real("contact.tangential_damping_ratio", 0.0, ge(0), le(1),
+           "tangential to normal damping gamma_s / gamma_n [-]"),
+
+      real("time.dt", 0.0, ge(0), none,
+           "time step, 0 = computed from stiffness and smallest mass [sqrt(d/g)]"),
+      real("time.dt_fraction", 1.0, gt(0), le(1),
+           "fraction of the stability limit used when dt = 0 [-]"),
+
+      real("neighbor.skin", 0.3, gt(0), none, "Verlet list skin [d]"),
+      integer("neighbor.sort_every", 10, ge(0),
+              "re-order discs in space every this many list builds, 0 = never"),
+
+      real("settle.drag", 1.0, ge(0), none, "extra viscous drag rate while settling [sqrt(g/d)]"),
+      real("settle.ke_threshold", 1e-6, gt(0), none,
+           "settled when the mean kinetic energy per disc is below this [m g d]"),
+      real("settle.max_time", 3000.0, gt(0), none,
+           "give up settling after this model time [sqrt(d/g)]"),
+      real("settle.relax_time", 20.0, ge(0), none,
+           "undamped time after the drag phase [sqrt(d/g)]"),
+
+      real("output.interval", 10.0, gt(0), none, "model time between output steps [sqrt(d/g)]"),
+      integer("output.checkpoint_every", 10, ge(0),
+              "write a checkpoint every this many output steps, 0 = only at the end"),
+      boolean("output.vtp", true, "write the ParaView series"),
+      text("output.progress", "auto", {"auto", "always", "never"},
+           "progress line: auto = only on a terminal"),
+  };
+  return table;
+}
+
+std::optional<std::size_t> find_key(std::string_view name) {
+  const auto& s = schema();
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s[i].name == name) return i;
+  return std::nullopt;
+}
+
+std::vector<std::string> schema_sections() {
+  std::vector<std::string> out;
+  for (const auto& k : schema())
+    if (out.empty() || out.back() != k.section()) out.emplace_back(k.section());
+  return out;
+}
+
+std::string type_text(KeyType type) {
+  switch (type) {
+    case KeyType::Float: return "a number";
+    case KeyType::Int: return "an integer";
+    case KeyType::Bool: return "true or false";
+    case KeyType::String: return "a string";
+  }
+  return "?";
+}
+
+std::string allowed_text(const KeySpec& spec) {
+  if (!spec.choices.empty()) {
+    std::string out = "one of ";
+    for (std::size_t i = 0; i < spec.choices.size(); ++i)
+      out += (i ? ", \"" : "\"") + spec.choices[i] + "\"";
+    return out;
+  }
+  std::string out;
+  if (spec.min) out = (spec.min->inclusive ? ">= " : "> ") + format_number(spec.min->value);
+  if (spec.max) {
+    if (!out.empty()) out += " and ";
+    out += (spec.max->inclusive ? "<= " : "< ") + format_number(spec.max->value);
+  }
+  return out;
+}
+
+std::string format_float(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  std::string s = format_number(x);
+  // Shortest round-trip text may look like an integer ("10000"); TOML would read that back
+  // as an int, so mark it as a float.
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string format_value(const ConfigValue& value) {
+  if (const auto* d = std::get_if<double>(&value)) return format_float(*d);
+  if (const auto* i = std::get_if<std::int64_t>(&value)) return std::to_string(*i);
+  if (const auto* b = std::get_if<bool>(&value)) return *b ? "true" : "false";
+  std::string out = "\"";
+  for (unsigned char c : std::get<std::string>(value)) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "\"";
+}
+
+std::string reference_markdown() {
+  static const char* type_names[] = {"float", "int", "bool", "string"};
+  std::string out;
+  for (const auto& section : schema_sections()) {
+    if (!out.empty()) out += "\n";
+    out += "### [" + section + "]\n\n";
+    out += "| key | type | default | allowed | meaning |\n";
+    out += "|-----|------|---------|---------|---------|\n";
+    for (const auto& k : schema()) {
+      if (k.section() != section) continue;
+      std::string allowed = allowed_text(k);
+      if (allowed.empty()) allowed = k.type == KeyType::Bool ? "true, false" : "any";
+      out += "| `" + k.name + "` | " + type_names[static_cast<int>(k.type)] + " | `" +
+             format_value(k.default_value) + "` | " + allowed + " | " + k.doc + " |\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace orogen

@@ -1,0 +1,61 @@
+#pragma once
+// The table of every configuration key: name, type, default, allowed values and a one-line
+// doc. Config (config.hpp) validates against it, writes the resolved copy from it, and
+// docs/configuration.md is generated from it (reference_markdown), so they cannot drift.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace orogen {
+
+enum class KeyType : std::uint8_t { Float, Int, Bool, String };
+
+// A configuration value; the alternative always matches the key's KeyType.
+using ConfigValue = std::variant<double, std::int64_t, bool, std::string>;
+
+// One end of an allowed range.
+struct Bound {
+  double value = 0;
+  bool inclusive = true;
+};
+
+struct KeySpec {
+  std::string name;  // dotted "section.key"
+  KeyType type = KeyType::Float;
+  ConfigValue default_value;
+  std::optional<Bound> min, max;     // numeric keys only; either may be absent
+  std::vector<std::string> choices;  // string keys only; empty = any string
+  std::string doc;                   // one line, unit in brackets
+
+  std::string_view section() const;  // "contact" of "contact.kn"
+  std::string_view key() const;      // "kn" of "contact.kn"
+};
+
+// Every key, grouped by section, in the order the resolved copy lists them.
+const std::vector<KeySpec>& schema();
+
+// Index into schema() of a dotted name, or nullopt.
+std::optional<std::size_t> find_key(std::string_view name);
+
+// Section names in schema order.
+std::vector<std::string> schema_sections();
+
+// Human text for messages and docs: "a number", "an integer", "true or false", "a string".
+std::string type_text(KeyType type);
+// The allowed values alone: "> 0 and <= 1", "one of \"a\", \"b\"", or "" when anything of the
+// right type goes.
+std::string allowed_text(const KeySpec& spec);
+
+// Shortest text that parses back to exactly `x` and reads as a TOML float ("10000.0", "1e-06").
+std::string format_float(double x);
+// A value as TOML writes it (strings quoted and escaped).
+std::string format_value(const ConfigValue& value);
+
+// The reference table of docs/configuration.md (markdown, one row per key).
+std::string reference_markdown();
+
+}  // namespace orogen

@@ -1,0 +1,28 @@
+// Applies the engine sections of the configuration to a World.
+#include <fmt/format.h>
+
+#include "config/config.hpp"
+#include "experiments/experiment.hpp"
+
+namespace orogen {
+
+void apply_engine_config(const Config& c, World& w) {
+  w.law.kn = c.get_float("contact.kn");
+  w.law.ks = c.get_float("contact.ks_ratio") * w.law.kn;
+  w.law.mu = c.get_float("contact.mu");
+  w.law.damping = NormalDamping::Restitution;
+  w.law.restitution = c.get_float("contact.restitution");
+  w.law.tangential_damping_ratio = c.get_float("contact.tangential_damping_ratio");
+  w.neighbors.skin = c.get_float("neighbor.skin");
+  w.sort_every = static_cast<int>(c.get_int("neighbor.sort_every"));
+  const double limit = w.stable_dt();
+  const double dt = c.get_float("time.dt");
+  if (dt > limit)
+    throw config_error(c.source_of("time.dt"), "time.dt", fmt::format("{}", dt),
+                       fmt::format("must not exceed the stability limit 0.1 * 2 pi sqrt(m_min_eff / k_n) = {:.6g} "
+                                   "for contact.kn = {} and the smallest disc (or use 0 to compute it)",
+                                   limit, w.law.kn));
+  w.dt = dt > 0 ? dt : c.get_float("time.dt_fraction") * limit;
+}
+
+}  // namespace orogen

@@ -1,0 +1,56 @@
+#pragma once
+// An experiment assembles engine parts from a configuration and adds its own stages and
+// measurements around World::advance(). The run driver (run/runner) owns outputs,
+// checkpoints and progress; an experiment only says what to simulate and what to measure.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/binary_archive.hpp"
+#include "world/world.hpp"
+
+namespace orogen {
+
+class Config;
+
+struct SeriesColumn {
+  std::string name, description;
+};
+
+class Experiment {
+ public:
+  virtual ~Experiment() = default;
+  // Builds the initial world of a fresh run.
+  virtual void setup(World& world) = 0;
+  // Advances one step with the experiment's own stages; false once the experiment is done.
+  virtual bool advance(World& world) = 0;
+  // Columns of series.csv and one row of them for the current state.
+  virtual std::vector<SeriesColumn> columns() const = 0;
+  virtual std::vector<double> measure(const World& world) const = 0;
+  // Extra per-disc fields stored in each snapshot (name, values by disc index).
+  virtual std::vector<std::pair<std::string, std::vector<double>>> fields(const World&) const { return {}; }
+  // Scalars stored on each snapshot group (e.g. S).
+  virtual std::vector<std::pair<std::string, double>> scalars(const World&) const { return {}; }
+  // Experiment state beyond the World, for checkpoints.
+  virtual void save(ArchiveWriter& out) const = 0;
+  virtual void load(const ArchiveReader& in) = 0;
+  // Work after the last step (e.g. writing the packing file).
+  virtual void finish(World&, const std::filesystem::path& /*out_dir*/) {}
+  // Short status for the progress line, and the fraction done (negative if unknown).
+  virtual std::string status(const World& world) const = 0;
+  virtual double fraction_done(const World&) const { return -1.0; }
+  // Rendering hints: layer thickness and the view box of the pictures.
+  virtual double h0() const = 0;
+  virtual std::array<double, 4> view_box(const World& world) const = 0;
+};
+
+// The experiment named by run.experiment; cross-key checks throw ConfigError.
+std::unique_ptr<Experiment> make_experiment(const Config& config);
+
+// Applies the [contact], [time] and [neighbor] sections to a world (stiffness, damping,
+// friction, time step with its stability check, skin).
+void apply_engine_config(const Config& config, World& world);
+
+}  // namespace orogen

@@ -1,0 +1,135 @@
+#include "experiments/packing_experiment.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "analysis/contact_stats.hpp"
+#include "analysis/surface.hpp"
+#include "io/snapshot_writer.hpp"
+
+namespace orogen {
+
+namespace {
+// Mass of a disc of diameter 1: the unit of mass (MODEL §1).
+constexpr double kUnitMass = std::numbers::pi / 4.0;
+}  // namespace
+
+void PackingExperiment::setup(World& w) {
+  place_packing(w, packing_);
+  w.body.drag = settle_.drag;
+  phase_ = Falling;
+  phase_start_time_ = 0;
+}
+
+double PackingExperiment::mean_kinetic_energy(const World& w) const {
+  if (w.discs.size() == 0) return 0;
+  return w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitMass;
+}
+
+bool PackingExperiment::advance(World& w) {
+  if (phase_ == Done) return false;
+  w.advance();
+  if (w.step % check_every_ != 0) return true;
+  if (w.time > settle_.max_time)
+    throw InstabilityError(fmt::format("the packing did not come to rest within settle.max_time = {} "
+                                       "(mean kinetic energy per disc {:.3g} m g d, threshold {:.3g})",
+                                       settle_.max_time, mean_kinetic_energy(w), settle_.ke_threshold));
+  const bool at_rest = mean_kinetic_energy(w) < settle_.ke_threshold;
+  switch (phase_) {
+    case Falling:
+      if (at_rest) {
+        trim_to_thickness(w, packing_.thickness);
+        phase_ = Resettling;
+        phase_start_time_ = w.time;
+      }
+      break;
+    case Resettling:
+      if (at_rest) {
+        w.body.drag = 0;
+        phase_ = Relaxing;
+        phase_start_time_ = w.time;
+      }
+      break;
+    case Relaxing:
+      if (at_rest && w.time - phase_start_time_ >= settle_.relax_time) {
+        record_initial_state(w, 0.0, packing_.length, settle_.column_width_factor * mean_radius(w.discs));
+        phase_ = Done;
+        return false;
+      }
+      break;
+    default: break;
+  }
+  return true;
+}
+
+std::vector<SeriesColumn> PackingExperiment::columns() const {
+  return {{"step", "model time step"},
+          {"time", "model time [sqrt(d/g)]"},
+          {"phase", "settling phase: 0 falling, 1 re-settling after trimming to the target thickness, "
+                    "2 relaxing without drag, 3 done"},
+          {"n_discs", "number of discs"},
+          {"n_clusters", "number of rigid clusters"},
+          {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
+          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded)"},
+          {"max_overlap", "largest disc-disc overlap [d]"},
+          {"surface_mean", "mean height of the upper surface [d]"}};
+}
+
+std::vector<double> PackingExperiment::measure(const World& w) const {
+  const auto stats = measure_contacts(w);
+  const Surface s = measure_surface(w.discs, 0.0, packing_.length,
+                                    settle_.column_width_factor * mean_radius(w.discs));
+  double sum = 0;
+  int n = 0;
+  for (double h : s.height)
+    if (std::isfinite(h)) { sum += h; ++n; }
+  return {static_cast<double>(w.step), w.time, static_cast<double>(phase_),
+          static_cast<double>(w.discs.size()), static_cast<double>(w.clusters.size()),
+          mean_kinetic_energy(w), stats.contacts_per_disc, stats.max_overlap, n ? sum / n : 0.0};
+}
+
+void PackingExperiment::save(ArchiveWriter& out) const {
+  out.put_scalar("packing.phase", phase_);
+  out.put_scalar("packing.phase_start_time", phase_start_time_);
+}
+
+void PackingExperiment::load(const ArchiveReader& in) {
+  phase_ = in.get_scalar<int>("packing.phase");
+  phase_start_time_ = in.get_scalar<double>("packing.phase_start_time");
+}
+
+void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {
+  // packing.h5: one snapshot of the settled layer plus what later runs need to know.
+  SnapshotMetadata meta;
+  meta.strings["content"] = "orogen-packing";
+  meta.strings["packing"] = std::string(packing_kind_name(packing_.kind));
+  meta.numbers["length"] = packing_.length;
+  meta.numbers["thickness"] = packing_.thickness;
+  meta.numbers["d_min"] = packing_.d_min;
+  meta.numbers["d_max"] = packing_.d_max;
+  meta.numbers["seed"] = static_cast<double>(packing_.seed);
+  const Surface s = measure_surface(w.discs, 0.0, packing_.length,
+                                    settle_.column_width_factor * mean_radius(w.discs));
+  SnapshotWriter writer(out_dir / "packing.h5", meta);
+  SnapshotFrame frame;
+  frame.step = static_cast<std::int64_t>(w.step);
+  frame.time = w.time;
+  frame.discs = &w.discs;
+  std::vector<double> surface_x, surface_h;
+  for (std::size_t k = 0; k < s.height.size(); ++k) frame.attrs[fmt::format("surface_{:05d}", k)] = s.height[k];
+  frame.attrs["column_width"] = s.width;
+  writer.append(frame);
+}
+
+std::string PackingExperiment::status(const World& w) const {
+  static constexpr const char* kNames[] = {"falling", "re-settling", "relaxing", "done"};
+  return fmt::format("{} KE/disc {:.2e}", kNames[phase_], mean_kinetic_energy(w));
+}
+
+std::array<double, 4> PackingExperiment::view_box(const World&) const {
+  return {-1.0, packing_.length + 1.0, -1.0, 1.6 * packing_.thickness + 2.0};
+}
+
+}  // namespace orogen

@@ -1,0 +1,47 @@
+#pragma once
+// The packing experiment (MODEL §10, first row): particles placed on a grid in a box settle
+// under gravity, are trimmed to the target thickness and settle again. The result, with each
+// particle's settled position and initial depth, is written to packing.h5 for later runs.
+#include "experiments/experiment.hpp"
+#include "packing/packing.hpp"
+
+namespace orogen {
+
+struct SettleSpec {
+  double drag = 1.0;             // extra viscous drag rate while settling (1/time)
+  double ke_threshold = 1e-6;    // mean kinetic energy per disc at rest (m g d)
+  double max_time = 3000;        // give up after this model time
+  double relax_time = 20;        // undamped time at the end
+  double column_width_factor = 2.3;
+};
+
+class PackingExperiment final : public Experiment {
+ public:
+  PackingExperiment(PackingSpec packing, SettleSpec settle) : packing_(packing), settle_(settle) {}
+
+  void setup(World& world) override;
+  bool advance(World& world) override;
+  std::vector<SeriesColumn> columns() const override;
+  std::vector<double> measure(const World& world) const override;
+  void save(ArchiveWriter& out) const override;
+  void load(const ArchiveReader& in) override;
+  void finish(World& world, const std::filesystem::path& out_dir) override;
+  std::string status(const World& world) const override;
+  double h0() const override { return packing_.thickness; }
+  std::array<double, 4> view_box(const World& world) const override;
+
+  // Settling phases, in order.
+  enum Phase : int { Falling = 0, Resettling = 1, Relaxing = 2, Done = 3 };
+  Phase phase() const { return static_cast<Phase>(phase_); }
+
+ private:
+  double mean_kinetic_energy(const World& world) const;
+
+  PackingSpec packing_;
+  SettleSpec settle_;
+  int phase_ = Falling;
+  double phase_start_time_ = 0;
+  std::uint64_t check_every_ = 200;  // steps between rest checks
+};
+
+}  // namespace orogen

@@ -1,0 +1,68 @@
+#include "io/snapshot_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace orogen {
+
+const std::vector<double>& Snapshot::field(const std::string& name) const {
+  const auto it = fields.find(name);
+  if (it == fields.end()) throw std::out_of_range("snapshot has no field '" + name + "'");
+  return it->second;
+}
+
+SnapshotReader::SnapshotReader(const std::filesystem::path& path)
+    : path_(path), file_(h5::File::open(path, h5::File::Mode::ReadOnly)) {
+  const hid_t root = file_.id();
+  if (!h5::has_attr(root, "format") || h5::get_attr_string(root, "format") != kSnapshotFormat)
+    throw h5::Error("'" + path.string() + "' is not an orogen snapshot file");
+  const std::int64_t version = h5::get_attr_int64(root, "version");
+  if (version != kSnapshotVersion)
+    throw h5::Error(fmt::format("'{}' has snapshot format version {}, this build reads {}", path.string(), version,
+                                kSnapshotVersion));
+  count_ = h5::get_attr_int64(root, "n_outputs");
+  for (const auto& a : h5::list_attrs(root)) {
+    if (a.name == "format" || a.name == "version" || a.name == "n_outputs") continue;
+    if (a.kind == h5::Kind::String) meta_.strings[a.name] = h5::get_attr_string(root, a.name);
+    else if (a.kind != h5::Kind::Other) meta_.numbers[a.name] = h5::get_attr_double(root, a.name);
+  }
+}
+
+Snapshot SnapshotReader::read(std::int64_t k) const {
+  if (k < 0 || k >= count_)
+    throw std::out_of_range(fmt::format("'{}' has {} complete outputs, no output {}", path_.string(), count_, k));
+  h5::Group g = h5::Group::open(file_.id(), snapshot_group_name(k));
+  Snapshot s;
+  s.step = h5::get_attr_int64(g.id(), "step");
+  s.time = h5::get_attr_double(g.id(), "time");
+  for (const auto& a : h5::list_attrs(g.id()))
+    if (a.name != "step" && a.name != "time" && a.kind != h5::Kind::String && a.kind != h5::Kind::Other)
+      s.attrs[a.name] = h5::get_attr_double(g.id(), a.name);
+
+  for (const auto& name : h5::list(g.id())) {
+    if (name == "walls") continue;
+    const h5::DatasetInfo info = h5::dataset_info(g.id(), name);
+    if (info.dims.size() != 1) continue;
+    if (name == "id") s.id = h5::read<std::int64_t>(g.id(), name);
+    else if (name == "cluster_id") s.cluster_id = h5::read<std::int64_t>(g.id(), name);
+    else if (name == "motion") s.motion = h5::read<std::uint8_t>(g.id(), name);
+    else if (info.kind == h5::Kind::Float) s.fields[name] = h5::read<double>(g.id(), name);
+  }
+  const std::size_t n = s.id.size();
+  auto check_size = [&](const std::string& name, std::size_t size) {
+    if (size != n)
+      throw h5::Error(fmt::format("'{}' output {}: '{}' has {} entries, 'id' has {}", path_.string(), k, name, size, n));
+  };
+  check_size("cluster_id", s.cluster_id.size());
+  check_size("motion", s.motion.size());
+  for (const auto& [name, v] : s.fields) check_size(name, v.size());
+
+  const h5::Matrix w = h5::read_2d(g.id(), "walls");
+  if (w.cols != 4) throw h5::Error(fmt::format("'{}' output {}: 'walls' must have 4 columns", path_.string(), k));
+  for (std::size_t r = 0; r < w.rows; ++r)
+    s.walls.push_back({w.data[4 * r], w.data[4 * r + 1], w.data[4 * r + 2], w.data[4 * r + 3]});
+  return s;
+}
+
+}  // namespace orogen

@@ -1,0 +1,44 @@
+#include "run/progress.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace orogen {
+
+Progress::Progress(Mode mode)
+    : enabled_(mode == Mode::Always || (mode == Mode::Auto && isatty(STDERR_FILENO))),
+      start_(std::chrono::steady_clock::now()),
+      last_draw_(start_) {}
+
+double Progress::rate() const {
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  return s > 0 ? particle_steps_ / s : 0.0;
+}
+
+void Progress::update(std::uint64_t step, double time, std::size_t particles, double fraction,
+                      const std::string& status) {
+  if (!started_) { started_ = true; start_step_ = step; last_step_ = step; start_ = std::chrono::steady_clock::now(); }
+  particle_steps_ += static_cast<double>(step - last_step_) * static_cast<double>(particles);
+  last_step_ = step;
+  if (!enabled_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_draw_ < std::chrono::milliseconds(250)) return;
+  last_draw_ = now;
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  std::string left = "?";
+  if (fraction > 0 && fraction <= 1) {
+    const double rest = elapsed / fraction * (1 - fraction);
+    left = fmt::format("{:.0f}:{:02.0f}", std::floor(rest / 60), std::fmod(rest, 60.0));
+  }
+  std::fprintf(stderr, "\r\033[K step %llu  t %.2f  %.2f M particle-steps/s  left %s  %s",
+               static_cast<unsigned long long>(step), time, rate() / 1e6, left.c_str(), status.c_str());
+  std::fflush(stderr);
+}
+
+void Progress::finish() {
+  if (enabled_) std::fprintf(stderr, "\n");
+}
+
+}  // namespace orogen

@@ -1,0 +1,22 @@
+#include "run/removal_log.hpp"
+
+#include <fmt/format.h>
+
+#include "io/atomic_file.hpp"
+
+namespace orogen {
+
+void write_removal_log(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals) {
+  static constexpr const char* kReasons[] = {"left_domain", "eroded", "other"};
+  std::string text =
+      "# particles removed from the model, one row each\n"
+      "# step: time step of the removal; time: model time; id: disc id; cluster_id: -1 for a free disc\n"
+      "# x, y: position when removed [d]; reason: left_domain, eroded or other (trimming a packing)\n"
+      "step,time,id,cluster_id,x,y,reason\n";
+  for (const auto& r : removals)
+    text += fmt::format("{},{},{},{},{},{},{}\n", r.step, r.time, r.id, r.cluster_id, r.x, r.y,
+                        kReasons[static_cast<int>(r.reason)]);
+  write_file_atomically(path, text);
+}
+
+}  // namespace orogen

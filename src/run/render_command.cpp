@@ -1,0 +1,95 @@
+#include "run/render_command.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "io/snapshot_reader.hpp"
+#include "render/animation.hpp"
+#include "render/frame_renderer.hpp"
+
+namespace fs = std::filesystem;
+
+namespace orogen {
+namespace {
+
+Frame frame_from_snapshot(const Snapshot& s, double h0, const std::string& field) {
+  Frame f;
+  f.x = s.field("x"); f.y = s.field("y"); f.radius = s.field("radius"); f.theta = s.field("theta");
+  f.depth0 = s.field("depth0"); f.x0 = s.field("x0");
+  f.cluster_id = s.cluster_id;
+  if (!field.empty()) { f.field = s.field(field); f.field_name = field; }
+  for (const auto& w : s.walls) f.walls.push_back({w[0], w[1], w[2], w[3]});
+  f.time = s.time;
+  f.step = s.step;
+  for (const auto& [k, v] : s.attrs) f.scalars.emplace_back(k, v);
+  f.h0 = h0;
+  return f;
+}
+
+// A view box that holds every output's discs, so the animation does not jump.
+void fit_view(const SnapshotReader& reader, Frame& f) {
+  double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
+  for (std::int64_t k = 0; k < reader.count(); k += std::max<std::int64_t>(1, reader.count() / 8)) {
+    const auto s = reader.read(k);
+    const auto& x = s.field("x"); const auto& y = s.field("y"); const auto& r = s.field("radius");
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      xl = std::min(xl, x[i] - r[i]); xh = std::max(xh, x[i] + r[i]);
+      yl = std::min(yl, y[i] - r[i]); yh = std::max(yh, y[i] + r[i]);
+    }
+  }
+  const double pad = 0.02 * (xh - xl);
+  f.x_min = xl - pad; f.x_max = xh + pad; f.y_min = std::min(yl, 0.0) - pad; f.y_max = yh + 4 * pad;
+}
+
+}  // namespace
+
+int render_command(const RenderCommandOptions& o) {
+  const fs::path h5 = o.dir / "snapshots.h5";
+  if (!fs::exists(h5)) {
+    std::cerr << "error: " << h5.string() << " not found: render takes the folder of a run\n";
+    return 2;
+  }
+  RenderOptions ro;
+  ro.width_px = o.width_px;
+  std::string field;
+  if (o.color == "horizons") ro.mode = ColorMode::Horizons;
+  else if (o.color == "cluster") ro.mode = ColorMode::Cluster;
+  else if (o.color.rfind("field:", 0) == 0) { ro.mode = ColorMode::Field; field = o.color.substr(6); }
+  else {
+    std::cerr << "error: --color " << o.color << ": allowed are horizons, cluster, field:NAME\n";
+    return 2;
+  }
+  const SnapshotReader reader(h5);
+  if (reader.count() == 0) {
+    std::cerr << "error: " << h5.string() << " holds no output steps yet\n";
+    return 2;
+  }
+  const auto it = reader.metadata().numbers.find("h0");
+  const double h0 = it != reader.metadata().numbers.end() ? it->second : 1.0;
+  const fs::path frames = o.dir / "frames";
+  fs::create_directories(frames);
+  Frame view;
+  fit_view(reader, view);
+  int n = 0;
+  for (std::int64_t k = 0; k < reader.count(); k += std::max(1, o.every)) {
+    Frame f = frame_from_snapshot(reader.read(k), h0, field);
+    f.x_min = view.x_min; f.x_max = view.x_max; f.y_min = view.y_min; f.y_max = view.y_max;
+    f.title = o.dir.filename().string();
+    render_png(f, ro, frames / fmt::format("frame_{:06d}.png", n++));
+  }
+  std::cout << "rendered " << n << " frames into " << frames.string() << "\n";
+  if (o.animation && n > 1) {
+    if (!ffmpeg_available()) {
+      std::cerr << "warning: ffmpeg not found; frames drawn, no animation made\n";
+      return 0;
+    }
+    assemble_animation(frames, "frame_%06d.png", o.dir / "animation.mp4", o.dir / "animation.gif", o.fps);
+    std::cout << "animation: " << (o.dir / "animation.mp4").string() << ", " << (o.dir / "animation.gif").string()
+              << "\n";
+  }
+  return 0;
+}
+
+}  // namespace orogen

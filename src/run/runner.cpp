@@ -1,0 +1,253 @@
+#include "run/runner.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/stdout_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include "config/config.hpp"
+#include "experiments/experiment.hpp"
+#include "io/atomic_file.hpp"
+#include "io/csv_series.hpp"
+#include "io/snapshot_writer.hpp"
+#include "io/vtp_writer.hpp"
+#include "run/progress.hpp"
+#include "run/removal_log.hpp"
+#include "world/world_archive.hpp"
+
+namespace fs = std::filesystem;
+
+namespace orogen {
+namespace {
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Everything the driver itself must carry across a checkpoint.
+struct RunState {
+  std::int64_t outputs = 0;          // output steps written
+  std::vector<double> output_times;  // for run.pvd
+  bool finished = false;
+};
+
+std::string vtp_name(std::int64_t k) { return fmt::format("vtp/output_{:06d}.vtp", k); }
+
+std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir) {
+  auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "run.log").string());
+  auto console = std::make_shared<spdlog::sinks::stderr_sink_mt>();
+  console->set_level(spdlog::level::info);
+  auto log = std::make_shared<spdlog::logger>("orogen", spdlog::sinks_init_list{file, console});
+  log->set_pattern("[%Y-%m-%d %H:%M:%S] %v");
+  log->flush_on(spdlog::level::info);
+  return log;
+}
+
+class Run {
+ public:
+  Run(const Config& config, fs::path dir, std::unique_ptr<Experiment> experiment)
+      : config_(config), dir_(std::move(dir)), exp_(std::move(experiment)),
+        interval_(config.get_float("output.interval")),
+        checkpoint_every_(config.get_int("output.checkpoint_every")),
+        write_vtp_(config.get_bool("output.vtp")) {}
+
+  void start_fresh() {
+    exp_->setup(world_);
+    apply_engine_config(config_, world_);
+    snapshots_.emplace(dir_ / "snapshots.h5", metadata());
+    series_.emplace(dir_ / "series.csv", csv_columns(), preamble());
+    fs::create_directories(dir_ / "vtp");
+    output();
+  }
+
+  void resume() {
+    apply_engine_config(config_, world_);
+    const ArchiveReader in(dir_ / "checkpoint.bin");
+    load_world(in, world_);
+    exp_->load(in);
+    state_.outputs = in.get_scalar<std::int64_t>("run.outputs");
+    in.get("run.output_times", state_.output_times);
+    state_.finished = in.get_scalar<std::uint8_t>("run.finished") != 0;
+    if (state_.finished) throw UsageError(fmt::format("the run in {} has already finished", dir_.string()));
+    // Drop outputs written after the checkpoint; the resumed run writes them again.
+    truncate_snapshots(dir_ / "snapshots.h5", state_.outputs);
+    snapshots_.emplace(SnapshotWriter::reopen(dir_ / "snapshots.h5"));
+    series_.emplace(CsvSeries::load(dir_ / "series.csv"));
+    series_->truncate(static_cast<std::size_t>(state_.outputs));
+    for (std::int64_t k = state_.outputs;; ++k) {
+      if (!fs::remove(dir_ / vtp_name(k))) break;
+    }
+    if (write_vtp_) write_pvd_file();
+    log().info("resumed at step {} (t = {:.6g}) after output {}", world_.step, world_.time, state_.outputs - 1);
+  }
+
+  void loop(Progress& progress) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::uint64_t step0 = world_.step;
+    double particle_steps = 0;
+    while (exp_->advance(world_)) {
+      particle_steps += static_cast<double>(world_.discs.size());
+      if (world_.time >= static_cast<double>(state_.outputs) * interval_ - 1e-9 * interval_) {
+        output();
+        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        log().info("output {} at step {} (t = {:.4g}): {} discs, {:.3g} M particle-steps/s, {}", state_.outputs - 1,
+                   world_.step, world_.time, world_.discs.size(), particle_steps / secs / 1e6, exp_->status(world_));
+        if (checkpoint_every_ > 0 && state_.outputs % checkpoint_every_ == 0) checkpoint();
+      }
+      if ((world_.step & 63) == 0)
+        progress.update(world_.step, world_.time, world_.discs.size(), exp_->fraction_done(world_), exp_->status(world_));
+    }
+    progress.finish();
+    if (state_.output_times.empty() || world_.step != last_output_step_) output();
+    exp_->finish(world_, dir_);
+    state_.finished = true;
+    checkpoint();
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    log().info("finished at step {} (t = {:.6g}) after {} steps in {:.1f} s ({:.3g} M particle-steps/s)", world_.step,
+               world_.time, world_.step - step0, secs, particle_steps / std::max(secs, 1e-9) / 1e6);
+  }
+
+  World& world() { return world_; }
+
+ private:
+  spdlog::logger& log() { return *spdlog::get("orogen"); }
+
+  SnapshotMetadata metadata() const {
+    SnapshotMetadata m;
+    m.strings["experiment"] = config_.get_string("run.experiment");
+    m.strings["orogen_version"] = OROGEN_VERSION;
+    m.numbers["h0"] = exp_->h0();
+    m.numbers["dt"] = world_.dt;
+    return m;
+  }
+
+  std::vector<CsvSeries::Column> csv_columns() const {
+    std::vector<CsvSeries::Column> cols;
+    for (const auto& c : exp_->columns()) cols.push_back({c.name, c.description});
+    return cols;
+  }
+
+  std::vector<std::string> preamble() const {
+    return {fmt::format("Orogen {} series, experiment '{}': one row per output step", OROGEN_VERSION,
+                        config_.get_string("run.experiment")),
+            "lengths in units of the largest disc diameter d, time in sqrt(d/g), unless a column says otherwise"};
+  }
+
+  void output() {
+    SnapshotFrame frame;
+    frame.step = static_cast<std::int64_t>(world_.step);
+    frame.time = world_.time;
+    frame.discs = &world_.discs;
+    for (auto& [name, value] : exp_->scalars(world_)) frame.attrs[name] = value;
+    frame.fields = exp_->fields(world_);
+    for (const auto& w : world_.walls)
+      if (w.enabled) frame.walls.push_back({w.ax, w.ay, w.bx, w.by});
+    snapshots_->append(frame);
+    if (write_vtp_) {
+      write_vtp(dir_ / vtp_name(state_.outputs), frame);
+    }
+    series_->add_row(exp_->measure(world_));
+    write_removal_log(dir_ / "removals.csv", world_.removals);
+    state_.output_times.push_back(world_.time);
+    ++state_.outputs;
+    last_output_step_ = world_.step;
+    if (write_vtp_) write_pvd_file();
+  }
+
+  void write_pvd_file() {
+    std::vector<std::pair<double, std::string>> entries;
+    for (std::int64_t k = 0; k < state_.outputs; ++k) entries.emplace_back(state_.output_times[k], vtp_name(k));
+    write_pvd(dir_ / "run.pvd", entries);
+  }
+
+  void checkpoint() {
+    ArchiveWriter out;
+    save_world(out, world_);
+    exp_->save(out);
+    out.put_scalar("run.outputs", state_.outputs);
+    out.put("run.output_times", state_.output_times);
+    out.put_scalar<std::uint8_t>("run.finished", state_.finished ? 1 : 0);
+    out.finish(dir_ / "checkpoint.bin");
+  }
+
+  const Config& config_;
+  fs::path dir_;
+  std::unique_ptr<Experiment> exp_;
+  World world_;
+  RunState state_;
+  double interval_;
+  std::int64_t checkpoint_every_;
+  bool write_vtp_;
+  std::uint64_t last_output_step_ = 0;
+  std::optional<SnapshotWriter> snapshots_;
+  std::optional<CsvSeries> series_;
+};
+
+Progress::Mode progress_mode(const Config& c) {
+  const auto& m = c.get_string("output.progress");
+  if (m == "always") return Progress::Mode::Always;
+  if (m == "never") return Progress::Mode::Never;
+  return Progress::Mode::Auto;
+}
+
+}  // namespace
+
+int run_command(const RunOptions& opt) {
+  try {
+    std::optional<Config> config;
+    if (opt.resume) {
+      if (!fs::exists(opt.out / "config.toml"))
+        throw UsageError(fmt::format("--resume {}: no run there (config.toml is missing)", opt.out.string()));
+      if (!fs::exists(opt.out / "checkpoint.bin"))
+        throw UsageError(fmt::format("--resume {}: no checkpoint yet (the run stopped before its first one); "
+                                     "start it again",
+                                     opt.out.string()));
+      if (opt.config || !opt.overrides.empty())
+        throw UsageError("--resume takes its configuration from the run folder; drop CONFIG and --set");
+      config.emplace(Config::load(opt.out / "config.toml", {}));
+    } else {
+      config.emplace(Config::load(opt.config, opt.overrides));
+      if (fs::exists(opt.out / "config.toml"))
+        throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
+                                     opt.out.string(), opt.out.string()));
+    }
+    auto experiment = make_experiment(*config);
+    const int threads = opt.threads >= 0 ? opt.threads : static_cast<int>(config->get_int("run.threads"));
+    if (threads > 0) omp_set_num_threads(threads);
+
+    fs::create_directories(opt.out);
+    if (!opt.resume) write_file_atomically(opt.out / "config.toml", config->to_toml());
+    auto logger = make_logger(opt.out);
+    spdlog::drop("orogen");
+    spdlog::register_logger(logger);
+    logger->info("orogen {} {} in {} with {} thread(s)", OROGEN_VERSION, opt.resume ? "resume" : "run",
+                 opt.out.string(), omp_get_max_threads());
+
+    Run run(*config, opt.out, std::move(experiment));
+    if (opt.resume) run.resume(); else run.start_fresh();
+    logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
+                 run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
+    Progress progress(progress_mode(*config));
+    try {
+      run.loop(progress);
+    } catch (const InstabilityError& e) {
+      progress.finish();
+      logger->error("stopped: {}", e.what());
+      return 3;
+    }
+    return 0;
+  } catch (const ConfigError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const UsageError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace orogen

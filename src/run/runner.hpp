@@ -1,0 +1,22 @@
+#pragma once
+// `orogen run`: runs an experiment from a configuration, writing outputs, checkpoints and a
+// log into one folder, and continues a killed run from its last checkpoint (--resume).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace orogen {
+
+struct RunOptions {
+  std::optional<std::filesystem::path> config;  // none: the built-in default
+  std::vector<std::string> overrides;           // "section.key=value"
+  std::filesystem::path out = "out";
+  int threads = -1;                             // -1: from the configuration
+  bool resume = false;                          // out names a run to continue
+};
+
+// Exit codes: 0 done, 2 bad input (configuration, folder), 3 the simulation became unstable.
+int run_command(const RunOptions& options);
+
+}  // namespace orogen

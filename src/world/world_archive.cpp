@@ -1,0 +1,138 @@
+#include "world/world_archive.hpp"
+
+#include <string>
+
+namespace orogen {
+namespace {
+
+std::string key(std::string_view prefix, std::string_view name) { return std::string(prefix) + "." + std::string(name); }
+
+template <class T>
+void put_u8(ArchiveWriter& out, std::string_view name, const std::vector<T>& v) {
+  std::vector<std::uint8_t> raw(v.begin(), v.end());
+  out.put(name, raw);
+}
+
+}  // namespace
+
+void save_world(ArchiveWriter& out, World& w) {
+  w.discs.for_each_array([&](std::string_view name, auto& v) { out.put(key("discs", name), v); });
+  w.clusters.for_each_array([&](std::string_view name, auto& v) { out.put(key("clusters", name), v); });
+  std::vector<double> wall_geometry;
+  std::vector<std::uint8_t> wall_flags;
+  std::string wall_names;
+  for (const auto& wall : w.walls) {
+    wall_geometry.insert(wall_geometry.end(), {wall.ax, wall.ay, wall.bx, wall.by, wall.vx, wall.vy,
+                                               wall.surface_speed, wall.mu, wall.traction_gamma});
+    wall_flags.push_back(static_cast<std::uint8_t>(wall.friction));
+    wall_flags.push_back(wall.enabled ? 1 : 0);
+    wall_names += wall.name + "\n";
+  }
+  out.put("walls.geometry", wall_geometry);
+  out.put("walls.flags", wall_flags);
+  out.put_string("walls.names", wall_names);
+
+  auto& L = w.neighbors;
+  out.put("nl.first", L.first); out.put("nl.second", L.second); out.put("nl.xi", L.xi);
+  out.put("nl.gamma_n", L.gamma_n); out.put("nl.gamma_s", L.gamma_s);
+  out.put("nl.id_first", L.id_first); out.put("nl.id_second", L.id_second);
+  out.put("nl.disc_start", L.disc_start); out.put("nl.disc_entries", L.disc_entries);
+  out.put("nl.walls.wall", L.walls.wall); out.put("nl.walls.disc", L.walls.disc);
+  out.put("nl.walls.xi", L.walls.xi); out.put("nl.walls.gamma_n", L.walls.gamma_n);
+  out.put("nl.walls.touching", L.walls.touching); out.put("nl.walls.at_limit", L.walls.at_limit);
+  out.put("nl.wall_disc_id", L.wall_disc_id);
+  out.put("nl.x_ref", L.x_ref); out.put("nl.y_ref", L.y_ref);
+  out.put("nl.wall_ax_ref", L.wall_ax_ref); out.put("nl.wall_ay_ref", L.wall_ay_ref);
+  out.put("nl.wall_bx_ref", L.wall_bx_ref); out.put("nl.wall_by_ref", L.wall_by_ref);
+  out.put_scalar("nl.builds", L.builds);
+  out.put_scalar<std::uint8_t>("nl.valid", L.valid ? 1 : 0);
+  out.put_scalar("nl.skin", L.skin);
+
+  out.put_scalar("world.dt", w.dt);
+  out.put_scalar("world.time", w.time);
+  out.put_scalar("world.step", w.step);
+  out.put_scalar("world.sort_every", w.sort_every);
+  out.put_scalar("world.next_disc_id", w.next_disc_id);
+  out.put_scalar("world.next_cluster_id", w.next_cluster_id);
+  out.put_scalar("world.gx", w.body.gx);
+  out.put_scalar("world.gy", w.body.gy);
+  out.put_scalar("world.drag", w.body.drag);
+
+  std::vector<std::uint64_t> r_step;
+  std::vector<double> r_time, r_x, r_y;
+  std::vector<std::int64_t> r_id, r_cluster;
+  std::vector<std::uint8_t> r_reason;
+  for (const auto& r : w.removals) {
+    r_step.push_back(r.step); r_time.push_back(r.time); r_x.push_back(r.x); r_y.push_back(r.y);
+    r_id.push_back(r.id); r_cluster.push_back(r.cluster_id); r_reason.push_back(static_cast<std::uint8_t>(r.reason));
+  }
+  out.put("removals.step", r_step); out.put("removals.time", r_time);
+  out.put("removals.x", r_x); out.put("removals.y", r_y);
+  out.put("removals.id", r_id); out.put("removals.cluster_id", r_cluster);
+  out.put("removals.reason", r_reason);
+}
+
+void load_world(const ArchiveReader& in, World& w) {
+  w.discs.for_each_array([&](std::string_view name, auto& v) { in.get(key("discs", name), v); });
+  w.clusters.for_each_array([&](std::string_view name, auto& v) { in.get(key("clusters", name), v); });
+  std::vector<double> g;
+  std::vector<std::uint8_t> flags;
+  in.get("walls.geometry", g);
+  in.get("walls.flags", flags);
+  const std::string names = in.get_string("walls.names");
+  w.walls.clear();
+  std::size_t pos = 0;
+  for (std::size_t k = 0; 9 * k < g.size(); ++k) {
+    Wall wall;
+    const auto end = names.find('\n', pos);
+    wall.name = names.substr(pos, end - pos);
+    pos = end + 1;
+    wall.ax = g[9 * k]; wall.ay = g[9 * k + 1]; wall.bx = g[9 * k + 2]; wall.by = g[9 * k + 3];
+    wall.vx = g[9 * k + 4]; wall.vy = g[9 * k + 5]; wall.surface_speed = g[9 * k + 6];
+    wall.mu = g[9 * k + 7]; wall.traction_gamma = g[9 * k + 8];
+    wall.friction = static_cast<WallFriction>(flags[2 * k]);
+    wall.enabled = flags[2 * k + 1] != 0;
+    w.walls.push_back(wall);
+  }
+
+  auto& L = w.neighbors;
+  in.get("nl.first", L.first); in.get("nl.second", L.second); in.get("nl.xi", L.xi);
+  in.get("nl.gamma_n", L.gamma_n); in.get("nl.gamma_s", L.gamma_s);
+  in.get("nl.id_first", L.id_first); in.get("nl.id_second", L.id_second);
+  in.get("nl.disc_start", L.disc_start); in.get("nl.disc_entries", L.disc_entries);
+  in.get("nl.walls.wall", L.walls.wall); in.get("nl.walls.disc", L.walls.disc);
+  in.get("nl.walls.xi", L.walls.xi); in.get("nl.walls.gamma_n", L.walls.gamma_n);
+  in.get("nl.walls.touching", L.walls.touching); in.get("nl.walls.at_limit", L.walls.at_limit);
+  in.get("nl.wall_disc_id", L.wall_disc_id);
+  in.get("nl.x_ref", L.x_ref); in.get("nl.y_ref", L.y_ref);
+  in.get("nl.wall_ax_ref", L.wall_ax_ref); in.get("nl.wall_ay_ref", L.wall_ay_ref);
+  in.get("nl.wall_bx_ref", L.wall_bx_ref); in.get("nl.wall_by_ref", L.wall_by_ref);
+  L.builds = in.get_scalar<std::uint64_t>("nl.builds");
+  L.valid = in.get_scalar<std::uint8_t>("nl.valid") != 0;
+  L.skin = in.get_scalar<double>("nl.skin");
+
+  w.dt = in.get_scalar<double>("world.dt");
+  w.time = in.get_scalar<double>("world.time");
+  w.step = in.get_scalar<std::uint64_t>("world.step");
+  w.sort_every = in.get_scalar<int>("world.sort_every");
+  w.next_disc_id = in.get_scalar<std::int64_t>("world.next_disc_id");
+  w.next_cluster_id = in.get_scalar<std::int64_t>("world.next_cluster_id");
+  w.body.gx = in.get_scalar<double>("world.gx");
+  w.body.gy = in.get_scalar<double>("world.gy");
+  w.body.drag = in.get_scalar<double>("world.drag");
+
+  std::vector<std::uint64_t> r_step;
+  std::vector<double> r_time, r_x, r_y;
+  std::vector<std::int64_t> r_id, r_cluster;
+  std::vector<std::uint8_t> r_reason;
+  in.get("removals.step", r_step); in.get("removals.time", r_time);
+  in.get("removals.x", r_x); in.get("removals.y", r_y);
+  in.get("removals.id", r_id); in.get("removals.cluster_id", r_cluster);
+  in.get("removals.reason", r_reason);
+  w.removals.clear();
+  for (std::size_t k = 0; k < r_step.size(); ++k)
+    w.removals.push_back({r_step[k], r_time[k], r_id[k], r_cluster[k], r_x[k], r_y[k],
+                          static_cast<RemovalReason>(r_reason[k])});
+}
+
+}  // namespace orogen
