@@ -1,6 +1,10 @@
 // orogen: the command line front end. Each subcommand is a thin wrapper over the library.
 #include <CLI/CLI.hpp>
 
+#include <iostream>
+
+#include "config/config.hpp"
+#include "config/schema.hpp"
 #include "run/render_command.hpp"
 #include "run/runner.hpp"
 
@@ -29,10 +33,18 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--fps", render.fps, "animation frames per second")->capture_default_str();
   render_cmd->add_flag("!--no-animation", render.animation, "only the PNG frames");
 
+  bool markdown = false;
+  auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
+  config_cmd->add_flag("--markdown", markdown, "print the key reference as Markdown tables instead");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (*config_cmd) {
+    std::cout << (markdown ? orogen::reference_markdown() : orogen::Config::load(std::nullopt, {}).to_toml());
+    return 0;
   }
   if (*run_cmd) {
     if (!config_path.empty()) run.config = config_path;

@@ -14,16 +14,21 @@ constexpr int kTableSize = 101;      // covers omega0 dt up to 1 (the stable lim
 double ContactLaw::gamma_n(double m_eff, double dt) const {
   if (damping == NormalDamping::PerMass) return damping_rate * m_eff;
   if (table_e_ != restitution) {
-    zeta_table_.resize(kTableSize);
-    zeta_table_[0] = damping_ratio_for_restitution(restitution);
-    for (int k = 1; k < kTableSize; ++k) zeta_table_[k] = discrete_damping_ratio(restitution, k * kTableStep);
+    // Entries are filled on first use: a run only touches the few near its omega0 dt.
+    zeta_table_.assign(kTableSize, -1.0);
     table_e_ = restitution;
   }
+  auto entry = [&](int k) {
+    if (zeta_table_[k] < 0)
+      zeta_table_[k] = k == 0 ? damping_ratio_for_restitution(restitution)
+                              : discrete_damping_ratio(restitution, k * kTableStep);
+    return zeta_table_[k];
+  };
   const double omega0 = std::sqrt(kn / m_eff);
   const double u = std::min(omega0 * dt / kTableStep, kTableSize - 1.0);
   const int k = std::min(static_cast<int>(u), kTableSize - 2);
   const double f = u - k;
-  const double zeta = (1 - f) * zeta_table_[k] + f * zeta_table_[k + 1];
+  const double zeta = (1 - f) * entry(k) + f * entry(k + 1);
   return 2.0 * zeta * std::sqrt(kn * m_eff);
 }
 

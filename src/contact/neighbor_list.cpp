@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include "util/parallel.hpp"
 
 namespace orogen {
 namespace {
@@ -196,7 +197,7 @@ bool needs_rebuild(const NeighborList& L, const Discs& d, const std::vector<Wall
   }
   double max2 = 0;
   const auto n = static_cast<std::ptrdiff_t>(d.size());
-#pragma omp parallel for schedule(static) reduction(max : max2)
+#pragma omp parallel for schedule(static) reduction(max : max2) if (n > kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const double dx = d.x[i] - L.x_ref[i], dy = d.y[i] - L.y_ref[i];
     const double m2 = dx * dx + dy * dy;

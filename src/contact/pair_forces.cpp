@@ -1,5 +1,7 @@
 #include "contact/pair_forces.hpp"
 
+#include "util/parallel.hpp"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -58,7 +60,7 @@ void pairs_then_gather(NeighborList& L, Discs& d, const ContactLaw& law, double 
 }  // namespace
 
 void compute_pair_forces(NeighborList& L, Discs& d, const ContactLaw& law, double dt, PairScratch& s) {
-  if (omp_get_max_threads() == 1) {
+  if (omp_get_max_threads() == 1 || static_cast<std::ptrdiff_t>(L.size()) < kMinParallelItems) {
     std::fill(d.fx.begin(), d.fx.end(), 0.0);
     std::fill(d.fy.begin(), d.fy.end(), 0.0);
     std::fill(d.torque.begin(), d.torque.end(), 0.0);

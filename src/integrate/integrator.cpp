@@ -1,12 +1,13 @@
 #include "integrate/integrator.hpp"
 
 #include <cstddef>
+#include "util/parallel.hpp"
 
 namespace orogen {
 
 void gather_cluster_forces(Clusters& c, const Discs& d) {
   const auto n = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     double fx = 0, fy = 0, tq = 0;
     for (const auto i : c.members[k]) {  // ascending disc-id order: a fixed summation order
@@ -23,7 +24,7 @@ void gather_cluster_forces(Clusters& c, const Discs& d) {
 void integrate(Discs& d, Clusters& c, const BodyForce& g, double dt) {
   const auto n = static_cast<std::ptrdiff_t>(d.size());
   const double damp = 1.0 - g.drag * dt;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     if (d.cluster[i] >= 0) continue;
     if (d.motion[i] == static_cast<std::uint8_t>(Motion::Dynamic)) {
@@ -38,7 +39,7 @@ void integrate(Discs& d, Clusters& c, const BodyForce& g, double dt) {
   if (c.size() == 0) return;
   gather_cluster_forces(c, d);
   const auto nc = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nc > kMinParallelItems)
   for (std::ptrdiff_t k = 0; k < nc; ++k) {
     if (c.motion[k] == static_cast<std::uint8_t>(Motion::Dynamic)) {
       c.vx[k] = damp * c.vx[k] + (c.fx[k] * c.inv_mass[k] + g.gx) * dt;

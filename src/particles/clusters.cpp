@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include "util/parallel.hpp"
 
 namespace orogen {
 
@@ -72,7 +73,7 @@ void relink_clusters(Clusters& c, Discs& d) {
 
 void update_cluster_discs(const Clusters& c, Discs& d) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const double cs = std::cos(c.theta[k]), sn = std::sin(c.theta[k]);
     for (const auto i : c.members[k]) {

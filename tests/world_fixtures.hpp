@@ -1,0 +1,37 @@
+#pragma once
+// Small worlds for the physics tests.
+#include <cmath>
+#include <numbers>
+
+#include "world/world.hpp"
+
+namespace orogen::testing {
+
+inline Wall wall(double ax, double ay, double bx, double by, WallFriction f = WallFriction::Smooth, double mu = 0) {
+  Wall w;
+  w.ax = ax; w.ay = ay; w.bx = bx; w.by = by;
+  w.friction = f;
+  w.mu = mu;
+  return w;
+}
+
+// Elastic energy stored in the disc-disc and disc-wall normal springs.
+inline double spring_energy(const World& w) {
+  double e = 0;
+  const auto& d = w.discs;
+  for (std::size_t p = 0; p < w.neighbors.size(); ++p) {
+    const auto i = w.neighbors.first[p], j = w.neighbors.second[p];
+    const double delta = d.radius[i] + d.radius[j] - std::hypot(d.x[j] - d.x[i], d.y[j] - d.y[i]);
+    if (delta > 0) e += 0.5 * w.law.kn * delta * delta;
+  }
+  for (std::size_t k = 0; k < w.neighbors.walls.size(); ++k) {
+    const auto i = w.neighbors.walls.disc[k];
+    double cx, cy;
+    const double dist = std::sqrt(closest_point_on_segment(w.walls[w.neighbors.walls.wall[k]], d.x[i], d.y[i], cx, cy));
+    const double delta = d.radius[i] - dist;
+    if (delta > 0) e += 0.5 * w.law.kn * delta * delta;
+  }
+  return e;
+}
+
+}  // namespace orogen::testing
