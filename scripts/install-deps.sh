@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Orogen needs, skipping those already present.
+set -euo pipefail
+packages=(build-essential cmake ninja-build pkg-config libgtest-dev libtomlplusplus-dev libcli11-dev
+          libfmt-dev libspdlog-dev libhdf5-dev libcairo2-dev ffmpeg python3 python3-numpy
+          python3-matplotlib python3-h5py)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "all packages present"
+  exit 0
+fi
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "installing: ${missing[*]}"
+$sudo apt-get update -q
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
