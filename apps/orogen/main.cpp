@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: run.threads, 0 = all cores)");
   std::string resume_dir;
   run_cmd->add_option("--resume", resume_dir, "continue the killed run in this folder");
+  run_cmd->add_option("--abort-after-outputs", run.abort_after_outputs,
+                      "test hook: exit 137 with no cleanup once this many outputs are written")
+      ->group("");  // hidden
 
   orogen::RenderCommandOptions render;
   std::string render_dir;

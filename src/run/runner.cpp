@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -56,9 +57,14 @@ class Run {
         checkpoint_every_(config.get_int("output.checkpoint_every")),
         write_vtp_(config.get_bool("output.vtp")) {}
 
-  void start_fresh() {
+  // Builds the initial state and writes nothing, so that errors found here (time.dt above the
+  // stability limit) leave no files behind.
+  void setup() {
     exp_->setup(world_);
     apply_engine_config(config_, world_);
+  }
+
+  void start_fresh() {
     snapshots_.emplace(dir_ / "snapshots.h5", metadata());
     series_.emplace(dir_ / "series.csv", csv_columns(), preamble());
     fs::create_directories(dir_ / "vtp");
@@ -113,6 +119,7 @@ class Run {
   }
 
   World& world() { return world_; }
+  void abort_after_outputs(std::int64_t n) { abort_after_outputs_ = n; }
 
  private:
   spdlog::logger& log() { return *spdlog::get("orogen"); }
@@ -157,6 +164,8 @@ class Run {
     ++state_.outputs;
     last_output_step_ = world_.step;
     if (write_vtp_) write_pvd_file();
+    // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
+    if (state_.outputs == abort_after_outputs_) std::_Exit(137);
   }
 
   void write_pvd_file() {
@@ -184,6 +193,7 @@ class Run {
   std::int64_t checkpoint_every_;
   bool write_vtp_;
   std::uint64_t last_output_step_ = 0;
+  std::int64_t abort_after_outputs_ = 0;
   std::optional<SnapshotWriter> snapshots_;
   std::optional<CsvSeries> series_;
 };
@@ -220,7 +230,12 @@ int run_command(const RunOptions& opt) {
     const int threads = opt.threads >= 0 ? opt.threads : static_cast<int>(config->get_int("run.threads"));
     if (threads > 0) omp_set_num_threads(threads);
 
-    fs::create_directories(opt.out);
+    Run run(*config, opt.out, std::move(experiment));
+    run.abort_after_outputs(opt.abort_after_outputs);
+    if (!opt.resume) run.setup();
+    std::error_code ec;
+    fs::create_directories(opt.out, ec);
+    if (ec) throw UsageError(fmt::format("cannot create the output folder {}: {}", opt.out.string(), ec.message()));
     if (!opt.resume) write_file_atomically(opt.out / "config.toml", config->to_toml());
     auto logger = make_logger(opt.out);
     spdlog::drop("orogen");
@@ -228,7 +243,6 @@ int run_command(const RunOptions& opt) {
     logger->info("orogen {} {} in {} with {} thread(s)", OROGEN_VERSION, opt.resume ? "resume" : "run",
                  opt.out.string(), omp_get_max_threads());
 
-    Run run(*config, opt.out, std::move(experiment));
     if (opt.resume) run.resume(); else run.start_fresh();
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
                  run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);

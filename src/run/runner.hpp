@@ -1,6 +1,7 @@
 #pragma once
 // `orogen run`: runs an experiment from a configuration, writing outputs, checkpoints and a
 // log into one folder, and continues a killed run from its last checkpoint (--resume).
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -14,6 +15,7 @@ struct RunOptions {
   std::filesystem::path out = "out";
   int threads = -1;                             // -1: from the configuration
   bool resume = false;                          // out names a run to continue
+  std::int64_t abort_after_outputs = 0;         // test hook: _Exit(137) once this many outputs are written
 };
 
 // Exit codes: 0 done, 2 bad input (configuration, folder), 3 the simulation became unstable.
