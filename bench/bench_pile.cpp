@@ -236,6 +236,7 @@ struct Result {
   double seconds = 0, cpu_seconds = 0;
   double pairs_per_disc = 0, contacts_per_disc = 0;
   std::uint64_t builds = 0;
+  std::size_t world_bytes = 0;  // of the working copy at the end of the stage
 };
 
 Result run_stage(const World& settled, const std::string& mode, int threads, std::uint64_t steps,
@@ -259,6 +260,7 @@ Result run_stage(const World& settled, const std::string& mode, int threads, std
   const double n = static_cast<double>(w.discs.size());
   r.pairs_per_disc = static_cast<double>(w.neighbors.size()) / n;
   r.contacts_per_disc = 2.0 * static_cast<double>(touching_pairs(w)) / n;
+  r.world_bytes = world_bytes(w);
   return r;
 }
 
@@ -369,7 +371,7 @@ int main(int argc, char** argv) {
                     ps / last.seconds / 1e6, 1e9 * last.seconds * threads / ps, last.pairs_per_disc,
                     last.contacts_per_disc, static_cast<unsigned long long>(last.builds), hwm,
                     (hwm - rss0) * 1048576.0 / static_cast<double>(n),
-                    static_cast<double>(world_bytes(world)) / static_cast<double>(n),
+                    static_cast<double>(last.world_bytes) / static_cast<double>(n),
                     100.0 * last.cpu_seconds / (last.seconds * threads), load_average());
         std::fflush(stdout);
       }

@@ -51,6 +51,9 @@ command -v "$LMP_BIN" >/dev/null || { echo "no $LMP_BIN (apt-get install -y lamm
 WORK=$(mktemp -d /tmp/orogen_compare.XXXXXX)
 [ "${KEEP:-0}" = 1 ] || trap 'rm -rf "$WORK"' EXIT
 cp "$LAMMPS_DIR"/* "$WORK"/
+# A private copy of the binary: a rebuild of the tree during the run must not change it.
+cp "$BENCH" "$WORK/bench_pile"
+BENCH=$WORK/bench_pile
 chmod u+w "$WORK"/*
 RAW=$WORK/raw.txt
 : >"$RAW"
@@ -61,7 +64,7 @@ echo "# work dir $WORK"
   echo "# run_compare.sh $(date -Is) on $(hostname), $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p')"
   echo "# NS=$NS MODES=$MODES REPEATS=$REPEATS OROGEN_THREADS=$OROGEN_THREADS OMP_WAIT_POLICY=${WAIT_POLICY:-default}"
   echo "# steps: $(for n in $NS; do printf '%s:%s ' "$n" "$(steps_for "$n")"; done)"
-  echo "# $($LMP_BIN -h | sed -n 's/^Large-scale.*- \(.*\)$/LAMMPS \1/p' | head -1); orogen $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo '?')"
+  echo "# LAMMPS $($LMP_BIN -h | sed -n 's/^Large-scale[^-]*- //p' | head -1); orogen $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo '?')$(git -C "$ROOT" diff --quiet HEAD -- src 2>/dev/null || echo ' (src modified)')"
 } >>"$RAW"
 
 # One LAMMPS bench log -> one raw line.

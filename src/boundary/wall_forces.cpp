@@ -46,13 +46,18 @@ void add_wall_forces(NeighborList& L, Discs& d, const std::vector<Wall>& walls,
           wc.at_limit[k] = 1;
         }
         break;
-      case WallFriction::Traction:
-        ft = -w.traction_gamma * vt;
+      case WallFriction::Traction: {
+        // Eq. 4.1 with the drag taken implicitly over the step, gamma / (1 + gamma dt / m):
+        // stable for any gamma, and at most the force that brings a free disc to the
+        // plate's speed in one step.
+        const double gamma = w.traction_gamma / (1.0 + w.traction_gamma * dt / wc.mass[k]);
+        ft = -gamma * vt;
         if (std::fabs(ft) > limit) {
           ft = std::copysign(limit, ft);
           wc.at_limit[k] = 1;
         }
         break;
+      }
     }
     wc.touching[k] = 1;
     d.fx[i] += fn * nx + ft * tx;

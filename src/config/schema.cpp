@@ -52,7 +52,8 @@ std::string_view KeySpec::key() const {
 
 const std::vector<KeySpec>& schema() {
   static const std::vector<KeySpec> table = {
-      text("run.experiment", "packing", {"packing"}, "what the run does"),
+      text("run.experiment", "packing", {"packing", "wedge"},
+           "what the run does: settle a packing, or grow a doubly-vergent wedge"),
       integer("run.seed", 1, ge(0), "seed of the packing generator"),
       integer("run.threads", 0, ge(0), "OpenMP threads, 0 = all cores"),
 
@@ -90,6 +91,29 @@ const std::vector<KeySpec>& schema() {
            "give up settling after this model time [sqrt(d/g)]"),
       real("settle.relax_time", 20.0, ge(0), none,
            "undamped time after the drag phase [sqrt(d/g)]"),
+
+      text("wedge.basal", "traction", {"traction", "constant_velocity"},
+           "basal condition: traction (thesis 4.4) or constant velocity (thesis 4.3)"),
+      real("wedge.speed", 0.025, gt(0), none, "convergence speed v of the pro-side plate [sqrt(g d)]"),
+      real("wedge.mu_bp", 0.2, ge(0), none, "pro-side basal friction coefficient mu_bp [-]"),
+      real("wedge.mu_br", 0.2, ge(0), none, "retro-side basal friction coefficient mu_br [-]"),
+      real("wedge.gamma_b", 10000.0, gt(0), none,
+           "traction drag coefficient gamma_b of the pro-side plate (eq. 4.1), applied implicitly "
+           "over a step so that any value is stable [m sqrt(g/d)]"),
+      real("wedge.s_end", 8.0, gt(0), none, "run until this normalised convergence S = v t / h0 [-]"),
+      integer("wedge.outputs", 100, ge(1), "output steps over the run"),
+      real("wedge.window", 3.0, gt(0), none,
+           "the active region reaches this far beyond each deformation front [h0]"),
+      real("wedge.initial_active", 12.0, gt(0), none,
+           "pro-side length of the active region before any front forms: long enough for basal "
+           "traction to break the layer at the S-point, not at the kinematic slab [h0]"),
+      real("wedge.retro_length", 8.0, gt(0), none, "length of the retro-side layer [h0]"),
+      real("wedge.tile_length", 8.0, gt(0), none, "length of the settled tile that feeds the layer [h0]"),
+      real("wedge.erosion_height", 0.0, ge(0), none, "erode above this elevation, 0 = no erosion [h0]"),
+      integer("wedge.erosion_every", 50, ge(1), "time steps between erosion passes"),
+      real("wedge.marker_height", 1.5, gt(0), none, "marker fronts are measured at this elevation [h0]"),
+      text("wedge.packing_file", "", {},
+           "settled tile from a packing run (its packing.h5); empty = settle one first"),
 
       real("output.interval", 10.0, gt(0), none, "model time between output steps [sqrt(d/g)]"),
       integer("output.checkpoint_every", 10, ge(0),

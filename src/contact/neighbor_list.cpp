@@ -168,7 +168,9 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
       L.walls.wall.push_back(static_cast<std::uint32_t>(w));
       L.walls.disc.push_back(static_cast<std::uint32_t>(i));
       L.walls.xi.push_back(wall_history.find(d.id[i], static_cast<std::int64_t>(w)));
-      L.walls.gamma_n.push_back(law.gamma_n(resisting_mass(d, c, static_cast<std::uint32_t>(i)), dt));
+      const double m = resisting_mass(d, c, static_cast<std::uint32_t>(i));
+      L.walls.gamma_n.push_back(law.gamma_n(m, dt));
+      L.walls.mass.push_back(m);
       L.walls.touching.push_back(0);
       L.walls.at_limit.push_back(0);
       L.wall_disc_id.push_back(d.id[i]);

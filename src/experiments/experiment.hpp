@@ -2,7 +2,10 @@
 // An experiment assembles engine parts from a configuration and adds its own stages and
 // measurements around World::advance(). The run driver (run/runner) owns outputs,
 // checkpoints and progress; an experiment only says what to simulate and what to measure.
+#include <array>
 #include <filesystem>
+#include <limits>
+#include <optional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -33,6 +36,12 @@ class Experiment {
   virtual std::vector<std::pair<std::string, std::vector<double>>> fields(const World&) const { return {}; }
   // Scalars stored on each snapshot group (e.g. S).
   virtual std::vector<std::pair<std::string, double>> scalars(const World&) const { return {}; }
+  // Called after each output step is written (e.g. to remember positions for the next one).
+  virtual void after_output(const World&) {}
+  // Model time between output steps, if the experiment sets it (else output.interval).
+  virtual std::optional<double> output_interval() const { return std::nullopt; }
+  // Pictures shade material that started at x0 < x_split apart (NaN: no split).
+  virtual double x_split() const { return std::numeric_limits<double>::quiet_NaN(); }
   // Experiment state beyond the World, for checkpoints.
   virtual void save(ArchiveWriter& out) const = 0;
   virtual void load(const ArchiveReader& in) = 0;

@@ -1,14 +1,35 @@
 // The registry of experiments: run.experiment names one; adding an experiment adds a line here.
 #include <fmt/format.h>
 
+#include <filesystem>
+#include <numbers>
+
 #include "config/config.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/packing_experiment.hpp"
+#include "experiments/wedge_experiment.hpp"
 
 namespace orogen {
 namespace {
 
-std::unique_ptr<Experiment> make_packing(const Config& c) {
+// Thesis eq. 4.3: the plate must move less per step than the gravitational contact overlap,
+// v dt < m g / k_n, for the smallest disc.
+void check_convergence_step(const Config& c, const WedgeSpec& w) {
+  const double kn = c.get_float("contact.kn");
+  const double d_min = c.get_float("particles.d_min");
+  const double m_min = std::numbers::pi * 0.25 * d_min * d_min;
+  const double limit = stable_time_step(kn, 0.5 * m_min);
+  const double dt = c.get_float("time.dt") > 0 ? c.get_float("time.dt") : c.get_float("time.dt_fraction") * limit;
+  const double overlap = m_min / kn;
+  if (w.v * dt >= overlap)
+    throw config_error(c.source_of("wedge.speed"), "wedge.speed", fmt::format("{}", w.v),
+                       fmt::format("the plate would move {:.3g} d per step, more than the gravitational contact "
+                                   "overlap m g / k_n = {:.3g} d of the smallest disc (thesis eq. 4.3); "
+                                   "use wedge.speed < {:.4g}, or a smaller time.dt",
+                                   w.v * dt, overlap, overlap / dt));
+}
+
+PackingSpec packing_spec(const Config& c) {
   PackingSpec p;
   p.kind = packing_kind_from_name(c.get_string("particles.packing"));
   p.length = c.get_float("layer.length");
@@ -20,13 +41,49 @@ std::unique_ptr<Experiment> make_packing(const Config& c) {
   if (p.d_min > p.d_max)
     throw config_error(c.source_of("particles.d_min"), "particles.d_min", fmt::format("{}", p.d_min),
                        fmt::format("must not exceed particles.d_max = {}", p.d_max));
+  return p;
+}
+
+SettleSpec settle_spec(const Config& c) {
   SettleSpec s;
   s.drag = c.get_float("settle.drag");
   s.ke_threshold = c.get_float("settle.ke_threshold");
   s.max_time = c.get_float("settle.max_time");
   s.relax_time = c.get_float("settle.relax_time");
   s.column_width_factor = c.get_float("layer.column_width_factor");
-  return std::make_unique<PackingExperiment>(p, s);
+  return s;
+}
+
+std::unique_ptr<Experiment> make_packing(const Config& c) {
+  return std::make_unique<PackingExperiment>(packing_spec(c), settle_spec(c));
+}
+
+std::unique_ptr<Experiment> make_wedge(const Config& c) {
+  WedgeSpec w;
+  w.basal = c.get_string("wedge.basal") == "traction" ? BasalCondition::Traction : BasalCondition::ConstantVelocity;
+  w.h0 = c.get_float("layer.thickness");
+  w.v = c.get_float("wedge.speed");
+  w.mu_bp = c.get_float("wedge.mu_bp");
+  w.mu_br = c.get_float("wedge.mu_br");
+  w.gamma_b = c.get_float("wedge.gamma_b");
+  w.s_end = c.get_float("wedge.s_end");
+  w.outputs = static_cast<int>(c.get_int("wedge.outputs"));
+  w.window = c.get_float("wedge.window");
+  w.retro_length = c.get_float("wedge.retro_length");
+  w.initial_active = c.get_float("wedge.initial_active");
+  w.tile_length = c.get_float("wedge.tile_length");
+  w.erosion_height = c.get_float("wedge.erosion_height");
+  w.erosion_every = static_cast<int>(c.get_int("wedge.erosion_every"));
+  w.marker_height = c.get_float("wedge.marker_height");
+  w.column_width_factor = c.get_float("layer.column_width_factor");
+  w.packing_file = c.get_string("wedge.packing_file");
+  w.packing = packing_spec(c);
+  w.settle = settle_spec(c);
+  if (!w.packing_file.empty() && !std::filesystem::exists(w.packing_file))
+    throw config_error(c.source_of("wedge.packing_file"), "wedge.packing_file", w.packing_file,
+                       "an existing packing.h5 written by a packing run");
+  check_convergence_step(c, w);
+  return std::make_unique<WedgeExperiment>(std::move(w));
 }
 
 }  // namespace
@@ -34,7 +91,8 @@ std::unique_ptr<Experiment> make_packing(const Config& c) {
 std::unique_ptr<Experiment> make_experiment(const Config& c) {
   const auto& name = c.get_string("run.experiment");
   if (name == "packing") return make_packing(c);
-  throw config_error(c.source_of("run.experiment"), "run.experiment", name, "one of: packing");
+  if (name == "wedge") return make_wedge(c);
+  throw config_error(c.source_of("run.experiment"), "run.experiment", name, "one of: packing, wedge");
 }
 
 }  // namespace orogen

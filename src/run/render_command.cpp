@@ -23,24 +23,31 @@ Frame frame_from_snapshot(const Snapshot& s, double h0, const std::string& field
   for (const auto& w : s.walls) f.walls.push_back({w[0], w[1], w[2], w[3]});
   f.time = s.time;
   f.step = s.step;
-  for (const auto& [k, v] : s.attrs) f.scalars.emplace_back(k, v);
+  for (const auto& [k, v] : s.attrs)
+    if (k.rfind("view_", 0) != 0) f.scalars.emplace_back(k, v);
   f.h0 = h0;
   return f;
 }
 
-// A view box that holds every output's discs, so the animation does not jump.
+// A view box that holds every output's view, so the animation does not jump: the experiment's
+// own view (attributes view_x_min ...) where it gives one, else the discs' extent.
 void fit_view(const SnapshotReader& reader, Frame& f) {
   double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
   for (std::int64_t k = 0; k < reader.count(); k += std::max<std::int64_t>(1, reader.count() / 8)) {
     const auto s = reader.read(k);
+    if (s.attrs.count("view_x_min")) {
+      xl = std::min(xl, s.attrs.at("view_x_min")); xh = std::max(xh, s.attrs.at("view_x_max"));
+      yl = std::min(yl, s.attrs.at("view_y_min")); yh = std::max(yh, s.attrs.at("view_y_max"));
+      continue;
+    }
     const auto& x = s.field("x"); const auto& y = s.field("y"); const auto& r = s.field("radius");
     for (std::size_t i = 0; i < x.size(); ++i) {
       xl = std::min(xl, x[i] - r[i]); xh = std::max(xh, x[i] + r[i]);
       yl = std::min(yl, y[i] - r[i]); yh = std::max(yh, y[i] + r[i]);
     }
   }
-  const double pad = 0.02 * (xh - xl);
-  f.x_min = xl - pad; f.x_max = xh + pad; f.y_min = std::min(yl, 0.0) - pad; f.y_max = yh + 4 * pad;
+  const double pad = 0.01 * (xh - xl);
+  f.x_min = xl - pad; f.x_max = xh + pad; f.y_min = std::min(yl, 0.0) - pad; f.y_max = yh + 2 * pad;
 }
 
 }  // namespace
@@ -68,6 +75,7 @@ int render_command(const RenderCommandOptions& o) {
   }
   const auto it = reader.metadata().numbers.find("h0");
   const double h0 = it != reader.metadata().numbers.end() ? it->second : 1.0;
+  const auto split = reader.metadata().numbers.find("x_split");
   const fs::path frames = o.dir / "frames";
   fs::create_directories(frames);
   Frame view;
@@ -77,6 +85,7 @@ int render_command(const RenderCommandOptions& o) {
     Frame f = frame_from_snapshot(reader.read(k), h0, field);
     f.x_min = view.x_min; f.x_max = view.x_max; f.y_min = view.y_min; f.y_max = view.y_max;
     f.title = o.dir.filename().string();
+    if (split != reader.metadata().numbers.end()) f.x_split = split->second;
     render_png(f, ro, frames / fmt::format("frame_{:06d}.png", n++));
   }
   std::cout << "rendered " << n << " frames into " << frames.string() << "\n";

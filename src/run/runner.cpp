@@ -53,15 +53,15 @@ class Run {
  public:
   Run(const Config& config, fs::path dir, std::unique_ptr<Experiment> experiment)
       : config_(config), dir_(std::move(dir)), exp_(std::move(experiment)),
-        interval_(config.get_float("output.interval")),
+        interval_(exp_->output_interval().value_or(config.get_float("output.interval"))),
         checkpoint_every_(config.get_int("output.checkpoint_every")),
         write_vtp_(config.get_bool("output.vtp")) {}
 
   // Builds the initial state and writes nothing, so that errors found here (time.dt above the
   // stability limit) leave no files behind.
   void setup() {
-    exp_->setup(world_);
     apply_engine_config(config_, world_);
+    exp_->setup(world_);
   }
 
   void start_fresh() {
@@ -130,6 +130,7 @@ class Run {
     m.strings["orogen_version"] = OROGEN_VERSION;
     m.numbers["h0"] = exp_->h0();
     m.numbers["dt"] = world_.dt;
+    m.numbers["x_split"] = exp_->x_split();
     return m;
   }
 
@@ -163,6 +164,7 @@ class Run {
     state_.output_times.push_back(world_.time);
     ++state_.outputs;
     last_output_step_ = world_.step;
+    exp_->after_output(world_);
     if (write_vtp_) write_pvd_file();
     // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
     if (state_.outputs == abort_after_outputs_) std::_Exit(137);

@@ -85,9 +85,11 @@ double World::min_pair_mass() const {
   return 0.5 * m_min;
 }
 
-double World::stable_dt() const {
-  return 0.1 * 2.0 * std::numbers::pi * std::sqrt(min_pair_mass() / law.kn);
+double stable_time_step(double kn, double min_pair_mass) {
+  return 0.1 * 2.0 * std::numbers::pi * std::sqrt(min_pair_mass / kn);
 }
+
+double World::stable_dt() const { return stable_time_step(law.kn, min_pair_mass()); }
 
 double World::kinetic_energy() const {
   double e = 0;

@@ -38,6 +38,10 @@ struct RemovalRecord {
   RemovalReason reason = RemovalReason::Other;
 };
 
+// Largest stable time step for normal stiffness kn and the smallest effective pair mass:
+// 0.1 * 2 pi sqrt(m_eff / kn) (MODEL §3, thesis 2.7).
+double stable_time_step(double kn, double min_pair_mass);
+
 struct World {
   Discs discs;
   Clusters clusters;

@@ -39,6 +39,7 @@ void save_world(ArchiveWriter& out, World& w) {
   out.put("nl.disc_start", L.disc_start); out.put("nl.disc_entries", L.disc_entries);
   out.put("nl.walls.wall", L.walls.wall); out.put("nl.walls.disc", L.walls.disc);
   out.put("nl.walls.xi", L.walls.xi); out.put("nl.walls.gamma_n", L.walls.gamma_n);
+  out.put("nl.walls.mass", L.walls.mass);
   out.put("nl.walls.touching", L.walls.touching); out.put("nl.walls.at_limit", L.walls.at_limit);
   out.put("nl.wall_disc_id", L.wall_disc_id);
   out.put("nl.x_ref", L.x_ref); out.put("nl.y_ref", L.y_ref);
@@ -102,6 +103,7 @@ void load_world(const ArchiveReader& in, World& w) {
   in.get("nl.disc_start", L.disc_start); in.get("nl.disc_entries", L.disc_entries);
   in.get("nl.walls.wall", L.walls.wall); in.get("nl.walls.disc", L.walls.disc);
   in.get("nl.walls.xi", L.walls.xi); in.get("nl.walls.gamma_n", L.walls.gamma_n);
+  in.get("nl.walls.mass", L.walls.mass);
   in.get("nl.walls.touching", L.walls.touching); in.get("nl.walls.at_limit", L.walls.at_limit);
   in.get("nl.wall_disc_id", L.wall_disc_id);
   in.get("nl.x_ref", L.x_ref); in.get("nl.y_ref", L.y_ref);

@@ -1,0 +1,48 @@
+#include "analysis/wedge_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace orogen {
+
+double fitted_slope(const Surface& s, double x_lo, double x_hi) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t k = 0; k < s.height.size(); ++k) {
+    const double x = s.column_centre(k);
+    if (x < x_lo || x > x_hi || !std::isfinite(s.height[k])) continue;
+    n += 1; sx += x; sy += s.height[k]; sxx += x * x; sxy += x * s.height[k];
+  }
+  const double den = n * sxx - sx * sx;
+  if (n < 2 || den <= 0) return 0.0;
+  return std::atan((n * sxy - sx * sy) / den);
+}
+
+WedgeGeometry measure_wedge(const WedgeGeometryInput& in, const Surface& surface) {
+  WedgeGeometry g;
+  const double inf = std::numeric_limits<double>::infinity();
+  double top = -inf;
+  double dp = inf, dr = -inf, mp = inf, mr = -inf;
+  const double front_y = in.h0 + in.d_max, marker_y = in.marker_height * in.h0;
+  for (std::size_t i = 0; i < in.x.size(); ++i) {
+    const double t = in.y[i] + in.radius[i];
+    if (t > top || (t == top && in.x[i] < g.x_peak)) { top = t; g.x_peak = in.x[i]; }
+    if (in.y[i] > front_y) { dp = std::min(dp, in.x[i]); dr = std::max(dr, in.x[i]); }
+    if (in.y[i] > marker_y) { mp = std::min(mp, in.x[i]); mr = std::max(mr, in.x[i]); }
+  }
+  g.has_front = std::isfinite(dp);
+  g.h = std::isfinite(top) ? top - in.h0 : 0.0;
+  g.dp = g.has_front ? dp : in.x_s;
+  g.dr = g.has_front ? dr : in.x_s;
+  g.mp = std::isfinite(mp) ? mp : in.x_s;
+  g.mr = std::isfinite(mr) ? mr : in.x_s;
+  if (!g.has_front) { g.x_peak = in.x_s; return g; }
+  // Mean tapers: from the front (at the layer's top, h0) up to the peak.
+  if (g.x_peak - g.dp > 0) g.alpha = std::atan(g.h / (g.x_peak - g.dp));
+  if (g.dr - g.x_peak > 0) g.beta = std::atan(g.h / (g.dr - g.x_peak));
+  g.alpha_fit = fitted_slope(surface, g.dp, g.x_peak);
+  g.beta_fit = -fitted_slope(surface, g.x_peak, g.dr);
+  return g;
+}
+
+}  // namespace orogen

@@ -1,0 +1,337 @@
+#include "experiments/wedge_experiment.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "analysis/wedge_geometry.hpp"
+
+namespace orogen {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kTileGap = 0.02;   // between stamped tiles, so that they never overlap
+constexpr int kHousekeepingEvery = 100;  // steps between window, pinning and stray checks
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+enum WallIndex : std::size_t { kProBase = 0, kRetroBase = 1, kRetroEnd = 2 };
+
+void set_motion(World& w, std::size_t i, Motion m, double vx) {
+  w.discs.motion[i] = static_cast<std::uint8_t>(m);
+  if (m == Motion::Kinematic) { w.discs.vx[i] = vx; w.discs.vy[i] = 0; w.discs.omega[i] = 0; }
+}
+
+}  // namespace
+
+void WedgeExperiment::setup(World& w) {
+  if (!spec_.packing_file.empty()) {
+    tile_ = load_tile(spec_.packing_file);
+  } else {
+    // Settle the tile in a world of its own with the same engine settings.
+    World box;
+    box.law = w.law;
+    box.dt = w.dt;
+    box.neighbors.skin = w.neighbors.skin;
+    box.sort_every = w.sort_every;
+    PackingSpec p = spec_.packing;
+    p.length = spec_.tile_length * spec_.h0;
+    p.thickness = spec_.h0;
+    PackingExperiment packing(p, spec_.settle);
+    packing.setup(box);
+    while (packing.advance(box)) {
+    }
+    tile_ = tile_from_world(box, p.length, p.thickness);
+  }
+  build_layer(w);
+}
+
+void WedgeExperiment::build_layer(World& w) {
+  const double L = tile_.length;
+  x_end_ = spec_.retro_length * spec_.h0;
+  Wall pro{.name = "pro_base", .ax = -1e7, .ay = 0, .bx = 0, .by = 0, .surface_speed = spec_.v, .mu = spec_.mu_bp};
+  pro.friction = spec_.basal == BasalCondition::Traction ? WallFriction::Traction : WallFriction::Rough;
+  pro.traction_gamma = spec_.gamma_b;
+  Wall retro{.name = "retro_base", .ax = 0, .ay = 0, .bx = x_end_ + 1, .by = 0,
+             .friction = WallFriction::Rough, .mu = spec_.mu_br};
+  Wall end{.name = "retro_end", .ax = x_end_, .ay = -1, .bx = x_end_, .by = 20 * spec_.h0};
+  w.walls = {pro, retro, end};
+  // Until a wedge exists, the layer in front of the S-point stalls on its base and must be
+  // long enough to break at the S-point rather than against the rigid kinematic slab.
+  window_pro_ = -std::max(spec_.window, spec_.initial_active) * spec_.h0;
+  window_retro_ = spec_.window * spec_.h0;
+  double left = x_end_ - L;
+  while (true) {
+    stamp_tile(w, tile_, left);
+    if (left < window_pro_ - L) break;
+    left -= L + kTileGap;
+  }
+  slab_left_ = left;
+  entered_ = static_cast<std::int64_t>(w.discs.size());
+  t_start_ = w.time;
+  update_windows(w);
+}
+
+// Keeps kinematic slab beyond the pro window: stamps a new tile when the leftmost one has
+// moved in far enough.
+void WedgeExperiment::feed_slab(World& w) {
+  slab_left_ += spec_.v * w.dt;
+  if (slab_left_ <= window_pro_ - tile_.length) return;
+  slab_left_ -= tile_.length + kTileGap;
+  const std::size_t first_cluster = w.clusters.size();
+  const auto [first, last] = stamp_tile(w, tile_, slab_left_);
+  for (auto i = first; i < last; ++i) set_motion(w, i, Motion::Kinematic, spec_.v);
+  for (std::size_t k = first_cluster; k < w.clusters.size(); ++k) {
+    w.clusters.motion[k] = static_cast<std::uint8_t>(Motion::Kinematic);
+    w.clusters.vx[k] = spec_.v; w.clusters.vy[k] = 0; w.clusters.omega[k] = 0;
+  }
+  entered_ += static_cast<std::int64_t>(last - first);
+}
+
+// Active region: between the windows that follow the deformation fronts; kinematic slab
+// outside (moving with the pro plate, or at rest on the retro side); pinned discs at rest.
+void WedgeExperiment::update_windows(World& w) {
+  auto& d = w.discs;
+  const double front_y = spec_.h0 + spec_.packing.d_max;
+  double dp = 0, dr = 0;
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (d.y[i] > front_y) { dp = std::min(dp, d.x[i]); dr = std::max(dr, d.x[i]); }
+  window_pro_ = std::min(window_pro_, dp - spec_.window * spec_.h0);
+  window_retro_ = std::min(x_end_ + 1.0, std::max(window_retro_, dr + spec_.window * spec_.h0));
+  if (pinned_.size() < static_cast<std::size_t>(w.next_disc_id)) pinned_.resize(static_cast<std::size_t>(w.next_disc_id), 0);
+  auto wanted = [&](double x, bool pinned, double& vx) {
+    vx = 0;
+    if (pinned || x > window_retro_) return Motion::Kinematic;
+    if (x < window_pro_) { vx = spec_.v; return Motion::Kinematic; }
+    return Motion::Dynamic;
+  };
+  bool changed = false;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (d.cluster[i] >= 0) continue;
+    double vx;
+    const Motion m = wanted(d.x[i], pinned_[static_cast<std::size_t>(d.id[i])], vx);
+    if (static_cast<std::uint8_t>(m) == d.motion[i] && (m == Motion::Dynamic || d.vx[i] == vx)) continue;
+    set_motion(w, i, m, vx);
+    changed = true;
+  }
+  auto& c = w.clusters;
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    bool pinned = false;
+    for (auto i : c.members[k]) if (i >= 0 && pinned_[static_cast<std::size_t>(d.id[i])]) pinned = true;
+    double vx;
+    const Motion m = wanted(c.x[k], pinned, vx);
+    if (static_cast<std::uint8_t>(m) == c.motion[k] && (m == Motion::Dynamic || c.vx[k] == vx)) continue;
+    c.motion[k] = static_cast<std::uint8_t>(m);
+    if (m == Motion::Kinematic) { c.vx[k] = vx; c.vy[k] = 0; c.omega[k] = 0; }
+    for (auto i : c.members[k]) if (i >= 0) d.motion[static_cast<std::size_t>(i)] = c.motion[k];
+    changed = true;
+  }
+  if (changed) {
+    update_cluster_discs(c, d);
+    w.invalidate_neighbors();
+  }
+}
+
+// Constant-velocity condition: discs touching the retro-side base are held at rest (no slip).
+void WedgeExperiment::pin_retro_base(World& w) {
+  const auto& wc = w.neighbors.walls;
+  if (pinned_.size() < static_cast<std::size_t>(w.next_disc_id)) pinned_.resize(static_cast<std::size_t>(w.next_disc_id), 0);
+  for (std::size_t k = 0; k < wc.size(); ++k)
+    if (wc.wall[k] == kRetroBase && wc.touching[k]) pinned_[static_cast<std::size_t>(w.discs.id[wc.disc[k]])] = 1;
+}
+
+// Erosion (thesis 6.3): every disc, or whole cluster by its mean elevation, above the
+// threshold is removed and logged.
+void WedgeExperiment::erode(World& w) {
+  const double limit = spec_.erosion_height * spec_.h0;
+  const auto& d = w.discs;
+  std::vector<std::uint8_t> flags(d.size(), 0);
+  bool any = false;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (d.cluster[i] >= 0) continue;
+    flags[i] = d.y[i] > limit;
+    any |= flags[i] != 0;
+  }
+  for (std::size_t k = 0; k < w.clusters.size(); ++k) {
+    if (w.clusters.y[k] <= limit) continue;
+    // Mean elevation of the member discs (the centre of mass weighs big discs more).
+    double sum = 0;
+    int n = 0;
+    for (auto i : w.clusters.members[k]) if (i >= 0) { sum += d.y[static_cast<std::size_t>(i)]; ++n; }
+    if (sum / n <= limit) continue;
+    for (auto i : w.clusters.members[k]) if (i >= 0) flags[static_cast<std::size_t>(i)] = 1;
+    any = true;
+  }
+  if (any) w.remove(flags, RemovalReason::Eroded);
+}
+
+void WedgeExperiment::remove_strays(World& w) {
+  const auto& d = w.discs;
+  std::vector<std::uint8_t> flags(d.size(), 0);
+  bool any = false;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    flags[i] = d.y[i] < -2.0 || d.x[i] > x_end_ + 2.0 || d.y[i] > 50 * spec_.h0;
+    any |= flags[i] != 0;
+  }
+  if (any) w.remove(flags, RemovalReason::LeftDomain);
+}
+
+bool WedgeExperiment::advance(World& w) {
+  if (convergence(w) >= spec_.s_end) return false;
+  w.advance();
+  feed_slab(w);
+  if (spec_.erosion_height > 0 && w.step % static_cast<std::uint64_t>(spec_.erosion_every) == 0) erode(w);
+  if (w.step % kHousekeepingEvery == 0) {
+    if (spec_.basal == BasalCondition::ConstantVelocity) pin_retro_base(w);
+    remove_strays(w);
+    update_windows(w);
+  }
+  return true;
+}
+
+Surface WedgeExperiment::surface(const World& w) const {
+  double r_mean = 0;
+  for (double r : tile_.radius) r_mean += r;
+  r_mean /= std::max<std::size_t>(1, tile_.size());
+  return measure_surface(w.discs, window_pro_ - spec_.h0, x_end_, spec_.column_width_factor * r_mean);
+}
+
+std::vector<SeriesColumn> WedgeExperiment::columns() const {
+  return {{"step", "model time step"},
+          {"time", "model time [sqrt(d/g)]"},
+          {"S", "normalised convergence: plate displacement / h0"},
+          {"H", "wedge height: highest elevation minus h0 [h0]"},
+          {"Dp", "pro-side deformation front: smallest x of discs above h0 + d_max, from the S-point [h0]"},
+          {"Mp", "pro-side marker front: smallest x of discs above the marker height [h0]"},
+          {"Dr", "retro-side deformation front: largest x of discs above h0 + d_max [h0]"},
+          {"Mr", "retro-side marker front: largest x of discs above the marker height [h0]"},
+          {"T", "x of the highest disc (peak), from the S-point [h0]"},
+          {"alpha", "mean pro-wedge taper: slope from Dp up to the peak [deg]"},
+          {"beta", "mean retro-wedge taper: slope from the peak down to Dr [deg]"},
+          {"alpha_fit", "least-squares slope of the surface between Dp and the peak [deg]"},
+          {"beta_fit", "least-squares slope of the surface between the peak and Dr, sign flipped [deg]"},
+          {"slip_pro", "fraction of touching pro-side basal contacts at the Coulomb limit"},
+          {"slip_retro", "fraction of touching retro-side basal contacts at the Coulomb limit"},
+          {"n_active", "discs in the force computation that move by forces (dynamic)"},
+          {"n_discs", "discs in the model (active and kinematic slab)"},
+          {"n_eroded", "discs removed by erosion so far"},
+          {"n_left", "discs that left the model space so far"},
+          {"n_entered", "discs ever added (initial layer and inflow); n_entered = n_discs + n_eroded + n_left"},
+          {"window_pro", "pro-side edge of the active region, from the S-point [h0]"},
+          {"window_retro", "retro-side edge of the active region, from the S-point [h0]"}};
+}
+
+std::vector<double> WedgeExperiment::measure(const World& w) const {
+  const Surface s = surface(w);
+  WedgeGeometryInput in{w.discs.x, w.discs.y, w.discs.radius, spec_.h0, spec_.packing.d_max, spec_.marker_height, 0.0};
+  const WedgeGeometry g = measure_wedge(in, s);
+  double touching[2] = {0, 0}, limit[2] = {0, 0};
+  const auto& wc = w.neighbors.walls;
+  for (std::size_t k = 0; k < wc.size(); ++k) {
+    if (wc.wall[k] > kRetroBase || !wc.touching[k]) continue;
+    touching[wc.wall[k]] += 1;
+    limit[wc.wall[k]] += wc.at_limit[k];
+  }
+  std::size_t active = 0, eroded = 0, left = 0;
+  for (std::size_t i = 0; i < w.discs.size(); ++i) active += w.discs.is_dynamic(i);
+  for (const auto& r : w.removals) {
+    eroded += r.reason == RemovalReason::Eroded;
+    left += r.reason == RemovalReason::LeftDomain;
+  }
+  const double h0 = spec_.h0;
+  return {static_cast<double>(w.step), w.time, convergence(w), g.h / h0, g.dp / h0, g.mp / h0, g.dr / h0, g.mr / h0,
+          g.x_peak / h0, g.alpha * kDeg, g.beta * kDeg, g.alpha_fit * kDeg, g.beta_fit * kDeg,
+          touching[0] > 0 ? limit[0] / touching[0] : 0.0, touching[1] > 0 ? limit[1] / touching[1] : 0.0,
+          static_cast<double>(active), static_cast<double>(w.discs.size()), static_cast<double>(eroded),
+          static_cast<double>(left), static_cast<double>(entered_), window_pro_ / h0, window_retro_ / h0};
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> WedgeExperiment::fields(const World& w) const {
+  const auto& d = w.discs;
+  std::vector<double> rel(d.size(), 0.0), dx3(d.size(), kNaN), dy3(d.size(), kNaN);
+  // Position of disc i at an earlier output (NaN if it did not exist then).
+  auto prev = [&](const std::vector<double>& a, std::size_t i) {
+    const auto id = static_cast<std::size_t>(d.id[i]);
+    return id < a.size() ? a[id] : kNaN;
+  };
+  // Largest displacement since the previous output relative to any touching disc.
+  const auto& L = w.neighbors;
+  if (L.x_ref.size() == d.size()) {
+    for (std::size_t p = 0; p < L.size(); ++p) {
+      const auto i = L.first[p], j = L.second[p];
+      const double gap = std::hypot(d.x[j] - d.x[i], d.y[j] - d.y[i]) - d.radius[i] - d.radius[j];
+      if (gap > 0) continue;
+      const double ux = (d.x[j] - prev(prev_x_[0], j)) - (d.x[i] - prev(prev_x_[0], i));
+      const double uy = (d.y[j] - prev(prev_y_[0], j)) - (d.y[i] - prev(prev_y_[0], i));
+      const double u = std::hypot(ux, uy);
+      if (!std::isfinite(u)) continue;
+      rel[i] = std::max(rel[i], u);
+      rel[j] = std::max(rel[j], u);
+    }
+  }
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    dx3[i] = d.x[i] - prev(prev_x_[2], i);
+    dy3[i] = d.y[i] - prev(prev_y_[2], i);
+  }
+  return {{"max_rel_disp", std::move(rel)}, {"disp3_x", std::move(dx3)}, {"disp3_y", std::move(dy3)}};
+}
+
+std::vector<std::pair<std::string, double>> WedgeExperiment::scalars(const World& w) const {
+  return {{"S", convergence(w)}, {"view_x_min", view_box(w)[0]}, {"view_x_max", view_box(w)[1]},
+          {"view_y_min", view_box(w)[2]}, {"view_y_max", view_box(w)[3]}};
+}
+
+void WedgeExperiment::after_output(const World& w) {
+  prev_x_[2] = std::move(prev_x_[1]); prev_y_[2] = std::move(prev_y_[1]);
+  prev_x_[1] = std::move(prev_x_[0]); prev_y_[1] = std::move(prev_y_[0]);
+  prev_x_[0].assign(static_cast<std::size_t>(w.next_disc_id), kNaN);
+  prev_y_[0].assign(static_cast<std::size_t>(w.next_disc_id), kNaN);
+  for (std::size_t i = 0; i < w.discs.size(); ++i) {
+    prev_x_[0][static_cast<std::size_t>(w.discs.id[i])] = w.discs.x[i];
+    prev_y_[0][static_cast<std::size_t>(w.discs.id[i])] = w.discs.y[i];
+  }
+}
+
+void WedgeExperiment::save(ArchiveWriter& out) const {
+  save_tile(out, tile_);
+  out.put_scalar("wedge.t_start", t_start_);
+  out.put_scalar("wedge.slab_left", slab_left_);
+  out.put_scalar("wedge.window_pro", window_pro_);
+  out.put_scalar("wedge.window_retro", window_retro_);
+  out.put_scalar("wedge.x_end", x_end_);
+  out.put_scalar("wedge.entered", entered_);
+  out.put("wedge.pinned", pinned_);
+  for (int k = 0; k < 3; ++k) {
+    out.put(fmt::format("wedge.prev_x{}", k), prev_x_[k]);
+    out.put(fmt::format("wedge.prev_y{}", k), prev_y_[k]);
+  }
+}
+
+void WedgeExperiment::load(const ArchiveReader& in) {
+  tile_ = read_tile(in);
+  t_start_ = in.get_scalar<double>("wedge.t_start");
+  slab_left_ = in.get_scalar<double>("wedge.slab_left");
+  window_pro_ = in.get_scalar<double>("wedge.window_pro");
+  window_retro_ = in.get_scalar<double>("wedge.window_retro");
+  x_end_ = in.get_scalar<double>("wedge.x_end");
+  entered_ = in.get_scalar<std::int64_t>("wedge.entered");
+  in.get("wedge.pinned", pinned_);
+  for (int k = 0; k < 3; ++k) {
+    in.get(fmt::format("wedge.prev_x{}", k), prev_x_[k]);
+    in.get(fmt::format("wedge.prev_y{}", k), prev_y_[k]);
+  }
+}
+
+std::string WedgeExperiment::status(const World& w) const {
+  std::size_t active = 0;
+  for (std::size_t i = 0; i < w.discs.size(); ++i) active += w.discs.is_dynamic(i);
+  return fmt::format("S {:.2f}/{:.1f}, {} active discs", convergence(w), spec_.s_end, active);
+}
+
+std::array<double, 4> WedgeExperiment::view_box(const World&) const {
+  return {window_pro_ + spec_.window * spec_.h0 - 2 * spec_.h0, x_end_ + 0.5, -0.5, 4.0 * spec_.h0};
+}
+
+}  // namespace orogen

@@ -1,0 +1,87 @@
+#pragma once
+// The doubly-vergent wedge (MODEL §7, thesis chapters 4-6): a settled layer of thickness h0 on
+// a flat base, driven toward the S-point (x = 0) by the pro-side plate at speed v while the
+// retro-side plate is at rest, in the frame of the S-point. Two basal conditions (constant
+// velocity, thesis 4.3; traction, 4.4), a reduced active region fed by a kinematic incoming
+// slab built from a repeated settled tile (4.2), optional erosion above a threshold height
+// (6.3), and the wedge measurements of MODEL §8.
+#include <optional>
+
+#include "experiments/experiment.hpp"
+#include "experiments/packing_experiment.hpp"
+#include "analysis/surface.hpp"
+#include "packing/tile.hpp"
+
+namespace orogen {
+
+enum class BasalCondition { Traction, ConstantVelocity };
+
+struct WedgeSpec {
+  BasalCondition basal = BasalCondition::Traction;
+  double h0 = 10;              // layer thickness (d)
+  double v = 0.025;            // convergence speed of the pro-side plate (d per sqrt(d/g))
+  double mu_bp = 0.2, mu_br = 0.2;  // basal friction, pro and retro side
+  double gamma_b = 1e4;        // traction drag coefficient (m g / sqrt(g d))
+  double s_end = 8;            // run until this normalised convergence S
+  int outputs = 100;           // output steps over the run
+  double window = 3;           // active region reaches this many h0 beyond each front
+  double initial_active = 12;  // pro-side active length before any front forms (h0)
+  double retro_length = 8;     // retro-side layer length (h0)
+  double tile_length = 8;      // length of the settled tile (h0)
+  double erosion_height = 0;   // erode above this multiple of h0 (0: no erosion)
+  int erosion_every = 50;      // steps between erosion passes
+  double marker_height = 1.5;  // marker fronts at this multiple of h0
+  double column_width_factor = 2.3;
+  std::string packing_file;    // settled tile from a packing run; empty: settle one first
+  PackingSpec packing;         // for settling the tile
+  SettleSpec settle;
+};
+
+class WedgeExperiment final : public Experiment {
+ public:
+  explicit WedgeExperiment(WedgeSpec spec) : spec_(std::move(spec)) {}
+
+  void setup(World& world) override;
+  bool advance(World& world) override;
+  std::vector<SeriesColumn> columns() const override;
+  std::vector<double> measure(const World& world) const override;
+  std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const override;
+  std::vector<std::pair<std::string, double>> scalars(const World& world) const override;
+  void after_output(const World& world) override;
+  void save(ArchiveWriter& out) const override;
+  void load(const ArchiveReader& in) override;
+  std::string status(const World& world) const override;
+  double fraction_done(const World& world) const override { return convergence(world) / spec_.s_end; }
+  double h0() const override { return spec_.h0; }
+  std::array<double, 4> view_box(const World& world) const override;
+  std::optional<double> output_interval() const override {
+    return spec_.s_end * spec_.h0 / spec_.v / spec_.outputs;
+  }
+  double x_split() const override { return 0.0; }
+
+  // Normalised convergence S = v t / h0 since the plates started.
+  double convergence(const World& world) const { return spec_.v * (world.time - t_start_) / spec_.h0; }
+
+ private:
+  void build_layer(World& world);
+  void feed_slab(World& world);
+  void update_windows(World& world);
+  void pin_retro_base(World& world);
+  void erode(World& world);
+  void remove_strays(World& world);
+  Surface surface(const World& world) const;
+
+  WedgeSpec spec_;
+  Tile tile_;
+  double t_start_ = 0;
+  double slab_left_ = 0;     // left edge of the leftmost stamped tile (moves with the plate)
+  double window_pro_ = 0;    // discs left of this are kinematic, moving with the plate
+  double window_retro_ = 0;  // discs right of this are kinematic at rest
+  double x_end_ = 0;         // right end wall of the retro-side layer
+  std::int64_t entered_ = 0; // discs ever added to the model
+  std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base
+  // Positions at the last three outputs, by disc id (NaN where the disc did not exist).
+  std::vector<double> prev_x_[3], prev_y_[3];
+};
+
+}  // namespace orogen

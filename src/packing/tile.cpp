@@ -1,0 +1,102 @@
+#include "packing/tile.hpp"
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+#include "io/snapshot_reader.hpp"
+
+namespace orogen {
+
+namespace {
+
+// Renumbers cluster ids to 0..n-1 in order of first appearance.
+std::vector<std::int32_t> local_groups(const std::vector<std::int64_t>& cluster_id) {
+  std::map<std::int64_t, std::int32_t> number;
+  std::vector<std::int32_t> group(cluster_id.size(), -1);
+  for (std::size_t i = 0; i < cluster_id.size(); ++i) {
+    if (cluster_id[i] < 0) continue;
+    auto [it, fresh] = number.try_emplace(cluster_id[i], static_cast<std::int32_t>(number.size()));
+    group[i] = it->second;
+  }
+  return group;
+}
+
+}  // namespace
+
+Tile tile_from_world(const World& w, double length, double thickness) {
+  Tile t;
+  t.length = length;
+  t.thickness = thickness;
+  // In id order, so that the tile does not depend on how the arrays happen to be sorted.
+  std::vector<std::size_t> order(w.discs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return w.discs.id[a] < w.discs.id[b]; });
+  std::vector<std::int64_t> cluster_ids;
+  for (auto i : order) {
+    t.x.push_back(w.discs.x[i]);
+    t.y.push_back(w.discs.y[i]);
+    t.radius.push_back(w.discs.radius[i]);
+    t.theta.push_back(w.discs.theta[i]);
+    t.depth0.push_back(w.discs.depth0[i]);
+    cluster_ids.push_back(w.discs.cluster_id[i]);
+  }
+  t.group = local_groups(cluster_ids);
+  return t;
+}
+
+Tile load_tile(const std::filesystem::path& file) {
+  const SnapshotReader reader(file);
+  const auto& meta = reader.metadata();
+  const auto content = meta.strings.find("content");
+  if (content == meta.strings.end() || content->second != "orogen-packing" || reader.count() < 1)
+    throw std::runtime_error(file.string() + " is not a packing file (packing.h5 written by a packing run)");
+  const Snapshot s = reader.read(reader.count() - 1);
+  Tile t;
+  t.length = meta.numbers.at("length");
+  t.thickness = meta.numbers.at("thickness");
+  std::vector<std::size_t> order(s.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return s.id[a] < s.id[b]; });
+  std::vector<std::int64_t> cluster_ids;
+  for (auto i : order) {
+    t.x.push_back(s.field("x")[i]);
+    t.y.push_back(s.field("y")[i]);
+    t.radius.push_back(s.field("radius")[i]);
+    t.theta.push_back(s.field("theta")[i]);
+    t.depth0.push_back(s.field("depth0")[i]);
+    cluster_ids.push_back(s.cluster_id[i]);
+  }
+  t.group = local_groups(cluster_ids);
+  return t;
+}
+
+std::pair<std::size_t, std::size_t> stamp_tile(World& w, const Tile& t, double x_left) {
+  const std::size_t first = w.discs.size();
+  std::map<std::int32_t, std::vector<std::size_t>> members;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const auto i = w.add_disc(x_left + t.x[k], t.y[k], t.radius[k]);
+    w.discs.depth0[i] = t.depth0[k];
+    if (t.group[k] >= 0) members[t.group[k]].push_back(i);
+  }
+  for (auto& [group, idx] : members) w.add_cluster(idx);
+  return {first, w.discs.size()};
+}
+
+void save_tile(ArchiveWriter& out, const Tile& t) {
+  out.put_scalar("tile.length", t.length);
+  out.put_scalar("tile.thickness", t.thickness);
+  out.put("tile.x", t.x); out.put("tile.y", t.y); out.put("tile.radius", t.radius);
+  out.put("tile.theta", t.theta); out.put("tile.depth0", t.depth0); out.put("tile.group", t.group);
+}
+
+Tile read_tile(const ArchiveReader& in) {
+  Tile t;
+  t.length = in.get_scalar<double>("tile.length");
+  t.thickness = in.get_scalar<double>("tile.thickness");
+  in.get("tile.x", t.x); in.get("tile.y", t.y); in.get("tile.radius", t.radius);
+  in.get("tile.theta", t.theta); in.get("tile.depth0", t.depth0); in.get("tile.group", t.group);
+  return t;
+}
+
+}  // namespace orogen

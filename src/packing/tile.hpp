@@ -1,0 +1,36 @@
+#pragma once
+// A settled slab tile: the particles of a packing, relative to the tile's lower-left corner,
+// stamped side by side to build a long layer and to feed new material into a run (thesis 4.2:
+// new incoming slab comes from repeating a settled tile, so a run is not limited by the
+// length of its initial packing).
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "io/binary_archive.hpp"
+#include "world/world.hpp"
+
+namespace orogen {
+
+struct Tile {
+  double length = 0, thickness = 0;
+  std::vector<double> x, y, radius, theta, depth0;
+  std::vector<std::int32_t> group;  // tile-local cluster number, -1 for a free disc
+  std::size_t size() const { return x.size(); }
+};
+
+// The settled particles of a world (a finished packing) as a tile of the given length.
+Tile tile_from_world(const World& world, double length, double thickness);
+
+// Reads packing.h5 (written by a packing run) as a tile.
+Tile load_tile(const std::filesystem::path& packing_file);
+
+// Stamps a copy of the tile with its lower-left corner at (x, 0): new discs and clusters with
+// fresh ids, at rest, with x0/y0 at their new positions and depth0 from the tile. Returns the
+// index range [first, last) of the new discs.
+std::pair<std::size_t, std::size_t> stamp_tile(World& world, const Tile& tile, double x);
+
+void save_tile(ArchiveWriter& out, const Tile& tile);
+Tile read_tile(const ArchiveReader& in);
+
+}  // namespace orogen

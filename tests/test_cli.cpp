@@ -1,0 +1,403 @@
+// The `orogen` command line end to end: determinism across thread counts, resume after a
+// kill, refusal of bad input (exit 2, nothing written) and the printed default config.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "io/hdf5_file.hpp"
+#include "io/snapshot_reader.hpp"
+#include "io/snapshot_writer.hpp"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using namespace orogen;
+
+namespace {
+
+// A fresh directory per test, removed afterwards.
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // Idle OpenMP threads sleep instead of spinning: on a loaded 2-core machine a spinning
+    // team makes the 2-thread runs 10-100x slower. Results do not depend on it.
+    ::setenv("OMP_WAIT_POLICY", "passive", 0);
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / (std::string("orogen_cli_") + info->name() + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void spit(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+}
+
+struct Result {
+  int status = -1;  // exit status, or 128 + signal
+  std::string out, err;
+};
+
+int decode_status(int raw) {
+  if (WIFEXITED(raw)) return WEXITSTATUS(raw);
+  if (WIFSIGNALED(raw)) return 128 + WTERMSIG(raw);
+  return -1;
+}
+
+// Runs `orogen ARGS` through the shell (ARGS is shell syntax), capturing stdout and stderr
+// in files under `scratch`.
+Result orogen_cli(const std::string& args, const fs::path& scratch) {
+  static int serial = 0;
+  const fs::path out = scratch / ("stdout_" + std::to_string(serial));
+  const fs::path err = scratch / ("stderr_" + std::to_string(serial++));
+  const std::string cmd =
+      "'" + std::string(OROGEN_BINARY) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  Result r;
+  r.status = decode_status(std::system(cmd.c_str()));
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+// Small settling runs (tenths of a second). Thread counts only matter above
+// kMinParallelItems (4096) discs or pairs, so the determinism runs use ~4000-4900 discs and
+// stop after 600 steps (every rest check passes at once with a huge threshold).
+std::string big_short(const std::string& packing) {
+  return "--set particles.packing=" + packing + " --set layer.length=" + (packing == "hexagonal" ? "170" : "160") +
+         " --set layer.thickness=20 --set settle.relax_time=0 --set settle.ke_threshold=1e9"
+         " --set output.interval=0.25 --set output.checkpoint_every=2 --set output.progress=never --set output.vtp=false";
+}
+// Settles for real: ~3000 steps of 45 discs, 7 outputs with a checkpoint every second one.
+// Few outputs: each costs a dozen fsyncs, which dominate these runs.
+const std::string kTiny =
+    "--set particles.packing=random_discs --set layer.length=10 --set layer.thickness=3 --set contact.kn=1000"
+    " --set settle.relax_time=1 --set settle.ke_threshold=1e-3 --set output.interval=2"
+    " --set output.checkpoint_every=2 --set output.progress=never --threads 1";
+
+std::uint64_t fnv1a(const void* data, std::size_t n) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  return h;
+}
+template <class T>
+std::uint64_t hash_of(const std::vector<T>& v) {
+  return fnv1a(v.data(), v.size() * sizeof(T)) ^ v.size();
+}
+std::uint64_t hash_of(const std::string& s) { return fnv1a(s.data(), s.size()); }
+std::uint64_t bits_of(double x) {
+  std::uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+// Content hash of everything a reader sees in a snapshot file (snapshots.h5, packing.h5):
+// root metadata, the names of the links under the root, and per output its step, time,
+// attributes and every dataset. HDF5 files themselves are not byte-comparable (object
+// time stamps, space left by deleted groups).
+std::map<std::string, std::uint64_t> snapshot_digest(const fs::path& file) {
+  std::map<std::string, std::uint64_t> d;
+  std::string links;
+  {
+    auto f = h5::File::open(file, h5::File::Mode::ReadOnly);
+    for (const auto& name : h5::list(f.id())) links += name + "\n";
+  }
+  d["links under /"] = hash_of(links);
+  const SnapshotReader r(file);
+  d["n_outputs"] = static_cast<std::uint64_t>(r.count());
+  for (const auto& [k, v] : r.metadata().numbers) d["meta " + k] = bits_of(v);
+  for (const auto& [k, v] : r.metadata().strings) d["meta " + k] = hash_of(v);
+  for (std::int64_t k = 0; k < r.count(); ++k) {
+    const Snapshot s = r.read(k);
+    const std::string g = snapshot_group_name(k) + "/";
+    d[g + "step"] = static_cast<std::uint64_t>(s.step);
+    d[g + "time"] = bits_of(s.time);
+    for (const auto& [name, v] : s.attrs) d[g + "@" + name] = bits_of(v);
+    for (const auto& [name, v] : s.fields) d[g + name] = hash_of(v);
+    d[g + "id"] = hash_of(s.id);
+    d[g + "cluster_id"] = hash_of(s.cluster_id);
+    d[g + "motion"] = hash_of(s.motion);
+    d[g + "walls"] = hash_of(s.walls);
+    EXPECT_TRUE(s.fields.contains("x") && s.fields.contains("y") && s.fields.contains("radius")) << file << " " << g;
+    EXPECT_GT(s.size(), 0u) << file << " " << g;
+  }
+  return d;
+}
+
+void expect_same_snapshots(const fs::path& a, const fs::path& b) {
+  ASSERT_TRUE(fs::exists(a)) << a;
+  ASSERT_TRUE(fs::exists(b)) << b;
+  const auto da = snapshot_digest(a), db = snapshot_digest(b);
+  EXPECT_EQ(da.size(), db.size()) << a << " vs " << b;
+  int shown = 0;
+  for (const auto& [key, h] : da) {
+    const auto it = db.find(key);
+    if (it == db.end()) {
+      ADD_FAILURE() << key << " is in " << a << " but not in " << b;
+    } else if (it->second != h) {
+      ADD_FAILURE() << key << " differs between " << a << " and " << b;
+    } else {
+      continue;
+    }
+    if (++shown == 10) break;
+  }
+}
+
+void expect_same_bytes(const fs::path& a, const fs::path& b) {
+  ASSERT_TRUE(fs::exists(a)) << a;
+  ASSERT_TRUE(fs::exists(b)) << b;
+  EXPECT_TRUE(slurp(a) == slurp(b)) << a << " and " << b << " differ";
+}
+
+std::vector<std::string> names_in(const fs::path& dir) {
+  std::vector<std::string> out;
+  if (!fs::exists(dir)) return out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) out.push_back(fs::relative(e.path(), dir).string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Two finished runs hold the same results: every snapshot dataset, packing.h5, and the
+// text outputs byte for byte (vtp files, when written).
+void expect_same_run(const fs::path& a, const fs::path& b) {
+  expect_same_snapshots(a / "snapshots.h5", b / "snapshots.h5");
+  expect_same_snapshots(a / "packing.h5", b / "packing.h5");
+  for (const char* f : {"series.csv", "removals.csv", "checkpoint.bin"}) expect_same_bytes(a / f, b / f);
+  EXPECT_EQ(fs::exists(a / "run.pvd"), fs::exists(b / "run.pvd"));
+  if (fs::exists(a / "run.pvd")) expect_same_bytes(a / "run.pvd", b / "run.pvd");
+  const auto vtp_a = names_in(a / "vtp"), vtp_b = names_in(b / "vtp");
+  EXPECT_EQ(vtp_a, vtp_b);
+  for (const auto& f : vtp_a) expect_same_bytes(a / "vtp" / f, b / "vtp" / f);
+}
+
+std::int64_t outputs_in(const fs::path& run) { return SnapshotReader(run / "snapshots.h5").count(); }
+
+TEST_F(Cli, SameSeedSameOutputsForOneAndTwoThreads) {
+  for (const std::string packing : {"hexagonal", "random_discs", "random_clusters"}) {
+    SCOPED_TRACE(packing);
+    const fs::path one = dir_ / (packing + "_1"), two = dir_ / (packing + "_2");
+    const auto r1 = orogen_cli("run --out '" + one.string() + "' --threads 1 " + big_short(packing), dir_);
+    ASSERT_EQ(r1.status, 0) << r1.err;
+    const auto r2 = orogen_cli("run --out '" + two.string() + "' --threads 2 " + big_short(packing), dir_);
+    ASSERT_EQ(r2.status, 0) << r2.err;
+    EXPECT_NE(slurp(one / "run.log").find("with 1 thread(s)"), std::string::npos);
+    EXPECT_NE(slurp(two / "run.log").find("with 2 thread(s)"), std::string::npos);
+    EXPECT_GE(outputs_in(one), 4);
+    expect_same_run(one, two);
+    // Above the parallel threshold, so the 2-thread run took its parallel paths.
+    EXPECT_GT(SnapshotReader(one / "snapshots.h5").read(0).size(), 4096u);
+  }
+}
+
+TEST_F(Cli, ResumeAfterKillIsBitwiseIdentical) {
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  const auto ra = orogen_cli("run --out '" + a.string() + "' " + kTiny, dir_);
+  ASSERT_EQ(ra.status, 0) << ra.err;
+  ASSERT_GE(outputs_in(a), 5);
+
+  // Dies right after its third output; the last checkpoint was taken after the second, so
+  // the third (snapshot group, vtp file, series row) must be dropped and written again.
+  const auto rb = orogen_cli("run --out '" + b.string() + "' --abort-after-outputs 3 " + kTiny, dir_);
+  ASSERT_EQ(rb.status, 137) << rb.err;
+  EXPECT_FALSE(fs::exists(b / "packing.h5"));
+  EXPECT_EQ(outputs_in(b), 3);
+  EXPECT_TRUE(fs::exists(b / "vtp" / "output_000002.vtp"));
+  EXPECT_FALSE(fs::exists(b / "vtp" / "output_000003.vtp"));
+
+  const auto rr = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  ASSERT_EQ(rr.status, 0) << rr.err;
+  EXPECT_NE(slurp(b / "run.log").find("resumed at step"), std::string::npos);
+  EXPECT_EQ(outputs_in(b), outputs_in(a));
+  expect_same_run(a, b);
+  expect_same_bytes(a / "config.toml", b / "config.toml");
+
+  // A finished run cannot be resumed again.
+  const auto again = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.err.find("already finished"), std::string::npos) << again.err;
+}
+
+// A real SIGKILL at an arbitrary point while output 4 (after the checkpoint taken at 4
+// outputs) is being written or just after.
+TEST_F(Cli, ResumeAfterSigkillIsBitwiseIdentical) {
+  const std::string slow = kTiny + " --set settle.relax_time=20";  // ~5000 steps left after the kill
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  const auto ra = orogen_cli("run --out '" + a.string() + "' " + slow, dir_);
+  ASSERT_EQ(ra.status, 0) << ra.err;
+
+  std::vector<std::string> args = {OROGEN_BINARY, "run", "--out", b.string()};
+  {
+    std::istringstream in(slow);
+    for (std::string w; in >> w;) args.push_back(w);
+  }
+  std::vector<char*> argv;
+  for (auto& s : args) argv.push_back(s.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, (dir_ / "killed.err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, OROGEN_BINARY, &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+
+  const fs::path marker = b / "vtp" / "output_000004.vtp";
+  int raw = 0;
+  bool exited = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(marker) && std::chrono::steady_clock::now() < deadline) {
+    if (::waitpid(pid, &raw, WNOHANG) == pid) { exited = true; break; }
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  if (!exited) {
+    ::kill(pid, SIGKILL);
+    ASSERT_EQ(::waitpid(pid, &raw, 0), pid);
+  }
+  const int status = decode_status(raw);
+  if (status == 0) GTEST_SKIP() << "the run finished before it could be killed (machine too loaded?)";
+  ASSERT_EQ(status, 128 + SIGKILL) << slurp(dir_ / "killed.err");
+  ASSERT_TRUE(fs::exists(b / "checkpoint.bin"));
+  EXPECT_FALSE(fs::exists(b / "packing.h5"));
+
+  const auto rr = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  ASSERT_EQ(rr.status, 0) << rr.err;
+  expect_same_run(a, b);
+}
+
+TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
+  // A finished run and one killed before its first checkpoint, for the cases that need one.
+  const fs::path done = dir_ / "done", early = dir_ / "early";
+  ASSERT_EQ(orogen_cli("run --out '" + done.string() + "' " + kTiny, dir_).status, 0);
+  ASSERT_EQ(orogen_cli("run --out '" + early.string() + "' --abort-after-outputs 1 " + kTiny, dir_).status, 137);
+  ASSERT_FALSE(fs::exists(early / "checkpoint.bin"));
+  auto fingerprint = [](const fs::path& run) {
+    std::map<std::string, std::string> files;  // run.log may grow: refused resumes are logged
+    for (const auto& f : names_in(run))
+      if (f != "run.log" && fs::is_regular_file(run / f)) files[f] = slurp(run / f);
+    return files;
+  };
+  const auto done_before = fingerprint(done), early_before = fingerprint(early);
+  ASSERT_FALSE(done_before.empty());
+
+  spit(dir_ / "syntax.toml", "[layer]\nlength = = 3\n");
+  spit(dir_ / "type.toml", "[contact]\nmu = \"high\"\n");
+  spit(dir_ / "key.toml", "[contact]\nfoo = 1\n");
+  spit(dir_ / "a_file", "");
+  const std::string d = "'" + dir_.string() + "/";
+
+  struct Case {
+    std::string args;
+    std::vector<std::string> expect;  // in stderr
+    bool fresh = true;                // --out 'new' must stay absent
+  };
+  const std::vector<Case> cases = {
+      {d + "syntax.toml' --out " + d + "new'", {"syntax.toml, line 2", "TOML syntax error"}},
+      {d + "type.toml' --out " + d + "new'", {"contact.mu = \"high\"", "expected a number >= 0"}},
+      {d + "key.toml' --out " + d + "new'", {"contact.foo", "unknown key", "mu_wall"}},
+      {d + "missing.toml' --out " + d + "new'", {"missing.toml", "cannot read the file"}},
+      {"--out " + d + "new' --set contact.mu=-1", {"contact.mu = -1", "must be >= 0"}},
+      {"--out " + d + "new' --set output.checkpoint_every=1.5", {"output.checkpoint_every = 1.5", "integer"}},
+      {"--out " + d + "new' --set output.vtp=maybe", {"output.vtp = maybe", "true or false"}},
+      {"--out " + d + "new' --set particles.packing=square",
+       {"particles.packing = square", "\"hexagonal\", \"random_discs\", \"random_clusters\""}},
+      {"--out " + d + "new' --set contact.foo=1", {"--set", "contact.foo", "unknown key"}},
+      {"--out " + d + "new' --set nosuch.x=1", {"unknown section [nosuch]"}},
+      {"--out " + d + "new' --set contact.mu", {"contact.mu", "section.key=value"}},
+      {"--out " + d + "new' --set particles.d_min=0.9 --set particles.d_max=0.8",
+       {"particles.d_min = 0.9", "must not exceed particles.d_max = 0.8"}},
+      {"--out " + d + "new' --set time.dt=1", {"time.dt = 1", "stability limit"}},
+      {"--out " + d + "new' --threads abc", {"--threads"}},
+      {"--out " + d + "new' --bogus", {"--bogus"}},
+      {"--out " + d + "a_file'", {"a_file", "cannot create the output folder"}},
+      {"--out " + d + "done'", {"already holds a run", "--resume"}},
+      {"--resume " + d + "new'", {"no run there"}},
+      {"--resume " + d + "done' --set contact.mu=0.2", {"drop CONFIG and --set"}},
+      {"--resume " + d + "done' " + d + "type.toml'", {"drop CONFIG and --set"}},
+      {"--resume " + d + "early'", {"no checkpoint yet"}, false},
+      {"--resume " + d + "done'", {"already finished"}, false},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE("orogen run " + c.args);
+    const auto r = orogen_cli("run " + c.args, dir_);
+    EXPECT_EQ(r.status, 2) << r.err;
+    for (const auto& e : c.expect) EXPECT_NE(r.err.find(e), std::string::npos) << "expected '" << e << "' in: " << r.err;
+    if (c.fresh) {
+      EXPECT_FALSE(fs::exists(dir_ / "new")) << "written: " << ::testing::PrintToString(names_in(dir_ / "new"));
+    }
+    fs::remove_all(dir_ / "new");
+  }
+
+  // An empty folder given to --resume stays empty.
+  fs::create_directories(dir_ / "empty");
+  const auto r = orogen_cli("run --resume " + d + "empty'", dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("no run there"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_empty(dir_ / "empty"));
+
+  // The runs that were refused are untouched.
+  EXPECT_TRUE(fingerprint(done) == done_before);
+  EXPECT_TRUE(fingerprint(early) == early_before);
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "a_file") && fs::file_size(dir_ / "a_file") == 0);
+}
+
+TEST_F(Cli, DefaultRunNeedsNoConfig) {
+  const auto printed = orogen_cli("config", dir_);
+  ASSERT_EQ(printed.status, 0) << printed.err;
+  EXPECT_NE(printed.out.find("[run]"), std::string::npos);
+  EXPECT_NE(printed.out.find("experiment = \"packing\""), std::string::npos);
+  spit(dir_ / "default.toml", printed.out);
+
+  // The printed default reads back and runs ...
+  const fs::path from_file = dir_ / "from_file", built_in = dir_ / "built_in";
+  const auto r1 = orogen_cli("run '" + (dir_ / "default.toml").string() + "' --out '" + from_file.string() + "' " + kTiny,
+                             dir_);
+  ASSERT_EQ(r1.status, 0) << r1.err;
+  EXPECT_GE(outputs_in(from_file), 2);
+  EXPECT_TRUE(fs::exists(from_file / "packing.h5"));
+  // ... and is the built-in default: no CONFIG, same overrides, same resolved config and results.
+  const auto r2 = orogen_cli("run --out '" + built_in.string() + "' " + kTiny, dir_);
+  ASSERT_EQ(r2.status, 0) << r2.err;
+  expect_same_bytes(from_file / "config.toml", built_in / "config.toml");
+  expect_same_run(from_file, built_in);
+  EXPECT_NE(slurp(built_in / "config.toml").find("length = 10"), std::string::npos);
+
+  // The config.toml a run writes is itself a valid CONFIG that resolves to the same text.
+  const fs::path again = dir_ / "again";
+  const auto r3 = orogen_cli("run '" + (built_in / "config.toml").string() + "' --out '" + again.string() +
+                                 "' --threads 1",
+                             dir_);
+  ASSERT_EQ(r3.status, 0) << r3.err;
+  expect_same_bytes(built_in / "config.toml", again / "config.toml");
+  expect_same_run(built_in, again);
+}
+
+}  // namespace
