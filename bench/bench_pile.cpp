@@ -59,14 +59,14 @@ std::size_t world_bytes(World& w) {
   std::size_t b = 0;
   w.discs.for_each_array([&](std::string_view, auto& v) { b += bytes_of(v); });
   const auto& L = w.neighbors;
-  b += bytes_of(L.first) + bytes_of(L.second) + bytes_of(L.xi) + bytes_of(L.gamma_n) + bytes_of(L.gamma_s) +
-       bytes_of(L.id_first) + bytes_of(L.id_second) + bytes_of(L.disc_start) + bytes_of(L.disc_entries) +
-       bytes_of(L.wall_disc_id) + bytes_of(L.x_ref) + bytes_of(L.y_ref);
+  b += bytes_of(L.first) + bytes_of(L.second) + bytes_of(L.xi) + bytes_of(L.gamma_n) + bytes_of(L.id_first) +
+       bytes_of(L.id_second) + bytes_of(L.chunk_start) + bytes_of(L.wall_disc_id) + bytes_of(L.x_ref) +
+       bytes_of(L.y_ref);
   const auto& wc = L.walls;
   b += bytes_of(wc.wall) + bytes_of(wc.disc) + bytes_of(wc.xi) + bytes_of(wc.gamma_n) + bytes_of(wc.touching) +
-       bytes_of(wc.at_limit);
+       bytes_of(wc.at_limit) + bytes_of(wc.mass);
   const auto& s = w.scratch;
-  b += bytes_of(s.fx) + bytes_of(s.fy) + bytes_of(s.ft) + bytes_of(s.touching);
+  b += bytes_of(s.discs) + bytes_of(s.forces);
   return b;
 }
 

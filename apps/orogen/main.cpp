@@ -30,11 +30,18 @@ int main(int argc, char** argv) {
   std::string render_dir;
   auto* render_cmd = app.add_subcommand("render", "draw the output steps of a run as PNG frames and an animation");
   render_cmd->add_option("dir", render_dir, "run folder")->required();
-  render_cmd->add_option("--color", render.color, "horizons | cluster | field:NAME")->capture_default_str();
+  render_cmd->add_option("--color", render.color,
+                         "horizons | cluster | field:NAME (field:max_rel_disp uses the hot colormap)")->capture_default_str();
   render_cmd->add_option("--width", render.width_px, "picture width in pixels")->capture_default_str();
   render_cmd->add_option("--every", render.every, "draw every n-th output")->capture_default_str();
   render_cmd->add_option("--fps", render.fps, "animation frames per second")->capture_default_str();
   render_cmd->add_flag("!--no-animation", render.animation, "only the PNG frames");
+  render_cmd->add_flag("--vectors", render.vectors,
+                       "draw each disc's displacement over the last three outputs as an arrow");
+  render_cmd->add_option("--vector-scale", render.vector_scale, "arrow length per unit displacement")
+      ->capture_default_str();
+  render_cmd->add_option("--vector-stride", render.vector_stride, "draw every n-th disc's arrow")
+      ->capture_default_str();
 
   bool markdown = false;
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");

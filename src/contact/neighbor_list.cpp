@@ -3,20 +3,28 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
 #include "util/parallel.hpp"
 
 namespace orogen {
 namespace {
 
+// Cells are numbered stripe by stripe across the longer side of the domain: (u, v) with u
+// along the long axis (the stripe) and v across it, index u * nv + v. Discs sorted by cell
+// then lie in memory in the order the pairs are built, and stripes make the chunks of the
+// force loop (see NeighborList::chunk_start).
 struct Grid {
   double x_lo = 0, y_lo = 0, cell = 1;
   std::int64_t nx = 1, ny = 1;
+  bool x_long = true;  // u runs along x
+  std::int64_t nu() const { return x_long ? nx : ny; }
+  std::int64_t nv() const { return x_long ? ny : nx; }
   std::int64_t cell_of(double x, double y) const {
     auto cx = static_cast<std::int64_t>((x - x_lo) / cell);
     auto cy = static_cast<std::int64_t>((y - y_lo) / cell);
     cx = std::clamp<std::int64_t>(cx, 0, nx - 1);
     cy = std::clamp<std::int64_t>(cy, 0, ny - 1);
-    return cy * nx + cx;
+    return x_long ? cx * ny + cy : cy * nx + cx;
   }
 };
 
@@ -34,6 +42,7 @@ Grid make_grid(const Discs& d, double cell) {
   g.x_lo = xl; g.y_lo = yl; g.cell = cell;
   g.nx = static_cast<std::int64_t>((xh - xl) / cell) + 1;
   g.ny = static_cast<std::int64_t>((yh - yl) / cell) + 1;
+  g.x_long = g.nx >= g.ny;
   return g;
 }
 
@@ -53,7 +62,7 @@ double pair_mass(double ma, double mb) {
 void bin_discs(const Discs& d, const Grid& g, std::vector<std::uint32_t>& order,
                std::vector<std::uint32_t>& cell_start) {
   const std::size_t n = d.size();
-  const auto ncell = static_cast<std::size_t>(g.nx * g.ny);
+  const auto ncell = static_cast<std::size_t>(g.nx * g.ny);  // numbered by Grid::cell_of
   std::vector<std::uint32_t> cell_of(n);
   cell_start.assign(ncell + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -100,8 +109,9 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
     for (std::size_t k = 0; k < n; ++k) order[k] = static_cast<std::uint32_t>(k);
   }
 
-  // Pairs: each cell against itself and its four forward neighbours (E, NW, N, NE).
-  L.first.clear(); L.second.clear(); L.xi.clear(); L.gamma_n.clear(); L.gamma_s.clear();
+  // Pairs: each cell against itself and its four forward neighbours in traversal order:
+  // (u, v+1) in its own stripe and (u+1, v-1), (u+1, v), (u+1, v+1) in the next.
+  L.first.clear(); L.second.clear(); L.xi.clear(); L.gamma_n.clear();
   L.id_first.clear(); L.id_second.clear();
   auto consider = [&](std::uint32_t a, std::uint32_t b) {
     if (d.cluster_id[a] >= 0 && d.cluster_id[a] == d.cluster_id[b]) return;
@@ -115,44 +125,36 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
     if (ratio > stats.max_overlap_ratio) { stats.max_overlap_ratio = ratio; stats.worst_a = a; stats.worst_b = b; }
     if (d.id[a] > d.id[b]) std::swap(a, b);
     const double m = pair_mass(resisting_mass(d, c, a), resisting_mass(d, c, b));
-    const double gn = law.gamma_n(m, dt);
     L.first.push_back(a);
     L.second.push_back(b);
     L.id_first.push_back(d.id[a]);
     L.id_second.push_back(d.id[b]);
     L.xi.push_back(pair_history.find(d.id[a], d.id[b]));
-    L.gamma_n.push_back(gn);
-    L.gamma_s.push_back(law.tangential_damping_ratio * gn);
+    L.gamma_n.push_back(law.gamma_n(m, dt));
   };
-  const std::int64_t neighbours[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-  for (std::int64_t cy = 0; cy < g.ny; ++cy) {
-    for (std::int64_t cx = 0; cx < g.nx; ++cx) {
-      const auto cell = static_cast<std::size_t>(cy * g.nx + cx);
+  // Chunks of whole stripes, at most kMaxChunks of them: a number fixed by the geometry alone,
+  // so that the order of the force sums never depends on the thread count.
+  constexpr std::int64_t kMaxChunks = 64;
+  const std::int64_t stripes_per_chunk = (g.nu() + kMaxChunks - 1) / kMaxChunks;
+  L.chunk_start.clear();
+  const std::int64_t neighbours[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};  // (du, dv)
+  for (std::int64_t u = 0; u < g.nu(); ++u) {
+    if (u % stripes_per_chunk == 0) L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
+    for (std::int64_t v = 0; v < g.nv(); ++v) {
+      const auto cell = static_cast<std::size_t>(u * g.nv() + v);
       for (auto s = cell_start[cell]; s < cell_start[cell + 1]; ++s) {
         const auto a = order[s];
         for (auto t = s + 1; t < cell_start[cell + 1]; ++t) consider(a, order[t]);
         for (const auto& nb : neighbours) {
-          const std::int64_t ox = cx + nb[0], oy = cy + nb[1];
-          if (ox < 0 || ox >= g.nx || oy >= g.ny) continue;
-          const auto other = static_cast<std::size_t>(oy * g.nx + ox);
+          const std::int64_t ou = u + nb[0], ov = v + nb[1];
+          if (ov < 0 || ov >= g.nv() || ou >= g.nu()) continue;
+          const auto other = static_cast<std::size_t>(ou * g.nv() + ov);
           for (auto t = cell_start[other]; t < cell_start[other + 1]; ++t) consider(a, order[t]);
         }
       }
     }
   }
-
-  // Per-disc pair index in ascending pair order.
-  L.disc_start.assign(n + 1, 0);
-  for (std::size_t p = 0; p < L.size(); ++p) { ++L.disc_start[L.first[p] + 1]; ++L.disc_start[L.second[p] + 1]; }
-  for (std::size_t i = 0; i < n; ++i) L.disc_start[i + 1] += L.disc_start[i];
-  L.disc_entries.resize(2 * L.size());
-  {
-    std::vector<std::uint32_t> fill(L.disc_start.begin(), L.disc_start.end() - 1);
-    for (std::size_t p = 0; p < L.size(); ++p) {
-      L.disc_entries[fill[L.first[p]]++] = static_cast<std::uint32_t>(p << 1);
-      L.disc_entries[fill[L.second[p]]++] = static_cast<std::uint32_t>(p << 1 | 1u);
-    }
-  }
+  L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
 
   // Wall contacts: every disc within reach of each enabled wall, in wall then disc order.
   L.walls.clear();

@@ -23,11 +23,14 @@ struct NeighborList {
   // means the same thing after every rebuild.
   std::vector<std::uint32_t> first, second;
   std::vector<double> xi;
-  std::vector<double> gamma_n, gamma_s;  // dashpot coefficients of the pair
+  std::vector<double> gamma_n;  // normal dashpot coefficient of the pair
   std::vector<std::int64_t> id_first, id_second;  // stable ids, to carry history across rebuilds
-  // Per-disc index of its pairs, ascending pair order (entry = pair << 1 | is_second), so
-  // that forces can be summed per disc in a fixed order whatever the thread count.
-  std::vector<std::uint32_t> disc_start, disc_entries;
+  // The pairs come in stripes of cells across the domain's long side; chunk k is pairs
+  // [chunk_start[k], chunk_start[k+1]), whole stripes. A pair joins discs of one stripe or of
+  // two neighbouring ones, so chunks two apart never share a disc: the force loop runs the even
+  // chunks in parallel, then the odd ones, each disc summing its pairs in the same order
+  // whatever the number of threads.
+  std::vector<std::uint32_t> chunk_start;
   // Wall contacts (walls are few; discs within the skin of each wall).
   WallContacts walls;
   std::vector<std::int64_t> wall_disc_id;

@@ -1,58 +1,57 @@
 #include "contact/pair_forces.hpp"
 
-#include "util/parallel.hpp"
-
 #include <omp.h>
 
 #include <algorithm>
 
+#include "contact/contact_block.hpp"
+#include "util/parallel.hpp"
+
 namespace orogen {
 namespace {
 
-inline bool pair_force(const NeighborList& L, const Discs& d, const ContactLaw& law, double dt,
-                       std::size_t p, double& xi, PairForce& f) {
-  const auto i = L.first[p], j = L.second[p];
-  return contact_force(d.x[j] - d.x[i], d.y[j] - d.y[i], d.radius[i], d.radius[j], d.vx[j] - d.vx[i],
-                       d.vy[j] - d.vy[i], d.omega[i], d.omega[j], law.kn, law.ks, law.mu, L.gamma_n[p],
-                       L.gamma_s[p], dt, xi, f);
+void pack_discs(const Discs& d, std::vector<ContactDisc>& out) {
+  const auto n = static_cast<std::ptrdiff_t>(d.size());
+  out.resize(d.size());
+#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < n; ++i) out[i] = {d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i], d.radius[i]};
 }
 
-void scatter_serial(NeighborList& L, Discs& d, const ContactLaw& law, double dt) {
-  const std::size_t np = L.size();
-  for (std::size_t p = 0; p < np; ++p) {
-    PairForce f;
-    if (!pair_force(L, d, law, dt, p, L.xi[p], f)) continue;
-    const auto i = L.first[p], j = L.second[p];
-    d.fx[i] -= f.fx; d.fy[i] -= f.fy; d.torque[i] += -d.radius[i] * f.ft;
-    d.fx[j] += f.fx; d.fy[j] += f.fy; d.torque[j] += -d.radius[j] * f.ft;
+// Gathers the touching pairs among [p0, p0 + count) into the block (their pair numbers in
+// `pair`), zeroes the history of the others, and runs the block kernel on the touching ones.
+int compute_block(NeighborList& L, const ContactDisc* c, const ContactLaw& law, double dt, std::size_t p0,
+                  int count, ContactBlock& b, std::uint32_t* pair) {
+  int m = 0;
+  for (int k = 0; k < count; ++k) {
+    const std::size_t p = p0 + k;
+    const ContactDisc& a = c[L.first[p]];
+    const ContactDisc& o = c[L.second[p]];
+    const double dx = o.x - a.x, dy = o.y - a.y, rsum = a.radius + o.radius;
+    if (dx * dx + dy * dy >= rsum * rsum) { L.xi[p] = 0; continue; }
+    b.dx[m] = dx; b.dy[m] = dy; b.ri[m] = a.radius; b.rj[m] = o.radius;
+    b.dvx[m] = o.vx - a.vx; b.dvy[m] = o.vy - a.vy; b.wi[m] = a.omega; b.wj[m] = o.omega;
+    b.gn[m] = L.gamma_n[p];
+    b.gs[m] = law.tangential_damping_ratio * b.gn[m];
+    b.xi[m] = L.xi[p];
+    pair[m++] = static_cast<std::uint32_t>(p);
   }
+  contact_forces_block(b, m, law.kn, law.ks, law.mu, dt);
+  for (int k = 0; k < m; ++k) L.xi[pair[k]] = b.xi[k];
+  return m;
 }
 
-void pairs_then_gather(NeighborList& L, Discs& d, const ContactLaw& law, double dt, PairScratch& s) {
-  const auto np = static_cast<std::ptrdiff_t>(L.size());
-  s.fx.resize(L.size()); s.fy.resize(L.size()); s.ft.resize(L.size()); s.touching.resize(L.size());
-#pragma omp parallel
-  {
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t p = 0; p < np; ++p) {
-      PairForce f;
-      s.touching[p] = pair_force(L, d, law, dt, static_cast<std::size_t>(p), L.xi[p], f);
-      s.fx[p] = f.fx; s.fy[p] = f.fy; s.ft[p] = f.ft;
-    }
-    const auto n = static_cast<std::ptrdiff_t>(d.size());
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-      double fx = 0, fy = 0, tq = 0;
-      const double r = d.radius[i];
-      for (auto e = L.disc_start[i]; e < L.disc_start[i + 1]; ++e) {
-        const auto entry = L.disc_entries[e];
-        const auto p = entry >> 1;
-        if (!s.touching[p]) continue;
-        if (entry & 1u) { fx += s.fx[p]; fy += s.fy[p]; }
-        else { fx -= s.fx[p]; fy -= s.fy[p]; }
-        tq += -r * s.ft[p];
-      }
-      d.fx[i] = fx; d.fy[i] = fy; d.torque[i] = tq;
+// All pairs of one chunk, in pair order, added onto the discs' forces.
+void chunk_forces(NeighborList& L, const ContactDisc* c, const ContactLaw& law, double dt, std::size_t begin,
+                  std::size_t end, DiscForce* force) {
+  ContactBlock b;
+  std::uint32_t pair[kContactBlock];
+  for (std::size_t p0 = begin; p0 < end; p0 += kContactBlock) {
+    const int count = static_cast<int>(std::min<std::size_t>(kContactBlock, end - p0));
+    const int m = compute_block(L, c, law, dt, p0, count, b, pair);
+    for (int k = 0; k < m; ++k) {
+      const auto i = L.first[pair[k]], j = L.second[pair[k]];
+      force[i].fx -= b.fx[k]; force[i].fy -= b.fy[k]; force[i].torque += -c[i].radius * b.ft[k];
+      force[j].fx += b.fx[k]; force[j].fy += b.fy[k]; force[j].torque += -c[j].radius * b.ft[k];
     }
   }
 }
@@ -60,13 +59,23 @@ void pairs_then_gather(NeighborList& L, Discs& d, const ContactLaw& law, double 
 }  // namespace
 
 void compute_pair_forces(NeighborList& L, Discs& d, const ContactLaw& law, double dt, PairScratch& s) {
-  if (omp_get_max_threads() == 1 || static_cast<std::ptrdiff_t>(L.size()) < kMinParallelItems) {
-    std::fill(d.fx.begin(), d.fx.end(), 0.0);
-    std::fill(d.fy.begin(), d.fy.end(), 0.0);
-    std::fill(d.torque.begin(), d.torque.end(), 0.0);
-    scatter_serial(L, d, law, dt);
-  } else {
-    pairs_then_gather(L, d, law, dt, s);
+  pack_discs(d, s.discs);
+  s.forces.assign(d.size(), DiscForce{0.0, 0.0, 0.0});
+  const ContactDisc* c = s.discs.data();
+  DiscForce* force = s.forces.data();
+  // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in parallel
+  // without races, and every disc sums its pairs in the same order for any thread count.
+  const auto chunks = static_cast<std::ptrdiff_t>(L.chunk_start.size()) - 1;
+  const bool parallel = static_cast<std::ptrdiff_t>(L.size()) >= kMinParallelItems && omp_get_max_threads() > 1;
+  for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
+    for (std::ptrdiff_t k = parity; k < chunks; k += 2)
+      chunk_forces(L, c, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
+  }
+  const auto n = static_cast<std::ptrdiff_t>(d.size());
+#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    d.fx[i] = force[i].fx; d.fy[i] = force[i].fy; d.torque[i] = force[i].torque;
   }
 }
 

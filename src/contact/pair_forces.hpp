@@ -9,16 +9,25 @@
 
 namespace orogen {
 
-// Per-pair scratch for the multi-threaded path.
-struct PairScratch {
-  std::vector<double> fx, fy, ft;
-  std::vector<std::uint8_t> touching;
+// What the contact kernel reads of a disc, packed so that a pair touches two cache lines
+// instead of a dozen (one array per field).
+struct ContactDisc {
+  double x, y, vx, vy, omega, radius;
 };
 
-// Sets discs' force and torque to the sum of their contact forces. With one thread the forces
-// are scattered straight onto the discs in pair order; with more, each pair's force goes to
-// scratch (parallel over pairs) and every disc sums its pairs in the same ascending pair
-// order. Both paths add the same terms in the same order, so the results are bitwise equal.
+// Force and torque summed on a disc, packed likewise.
+struct DiscForce {
+  double fx, fy, torque;
+};
+
+// Scratch of the force loop: packed discs and their force sums.
+struct PairScratch {
+  std::vector<ContactDisc> discs;
+  std::vector<DiscForce> forces;
+};
+
+// Sets discs' force and torque to the sum of their contact forces, chunk by chunk (see
+// NeighborList::chunk_start): bitwise the same result for any number of threads.
 void compute_pair_forces(NeighborList& list, Discs& discs, const ContactLaw& law, double dt,
                          PairScratch& scratch);
 

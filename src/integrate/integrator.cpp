@@ -24,17 +24,32 @@ void gather_cluster_forces(Clusters& c, const Discs& d) {
 void integrate(Discs& d, Clusters& c, const BodyForce& g, double dt) {
   const auto n = static_cast<std::ptrdiff_t>(d.size());
   const double damp = 1.0 - g.drag * dt;
-#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
+  // Written without branches so that it vectorises. Cluster discs are updated here too, for
+  // nothing: update_cluster_discs overwrites them from their bodies below.
+  double* __restrict vx = d.vx.data();
+  double* __restrict vy = d.vy.data();
+  double* __restrict omega = d.omega.data();
+  double* __restrict x = d.x.data();
+  double* __restrict y = d.y.data();
+  double* __restrict theta = d.theta.data();
+  const double* __restrict fx = d.fx.data();
+  const double* __restrict fy = d.fy.data();
+  const double* __restrict tq = d.torque.data();
+  const double* __restrict inv_m = d.inv_mass.data();
+  const double* __restrict inv_i = d.inv_inertia.data();
+  const std::uint8_t* __restrict motion = d.motion.data();
+#pragma omp parallel for simd schedule(static) if (n > kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    if (d.cluster[i] >= 0) continue;
-    if (d.motion[i] == static_cast<std::uint8_t>(Motion::Dynamic)) {
-      d.vx[i] = damp * d.vx[i] + (d.fx[i] * d.inv_mass[i] + g.gx) * dt;
-      d.vy[i] = damp * d.vy[i] + (d.fy[i] * d.inv_mass[i] + g.gy) * dt;
-      d.omega[i] = damp * d.omega[i] + d.torque[i] * d.inv_inertia[i] * dt;
-    }
-    d.x[i] += d.vx[i] * dt;
-    d.y[i] += d.vy[i] * dt;
-    d.theta[i] += d.omega[i] * dt;
+    const bool dynamic = motion[i] == static_cast<std::uint8_t>(Motion::Dynamic);
+    const double vx_new = damp * vx[i] + (fx[i] * inv_m[i] + g.gx) * dt;
+    const double vy_new = damp * vy[i] + (fy[i] * inv_m[i] + g.gy) * dt;
+    const double w_new = damp * omega[i] + tq[i] * inv_i[i] * dt;
+    vx[i] = dynamic ? vx_new : vx[i];
+    vy[i] = dynamic ? vy_new : vy[i];
+    omega[i] = dynamic ? w_new : omega[i];
+    x[i] += vx[i] * dt;
+    y[i] += vy[i] * dt;
+    theta[i] += omega[i] * dt;
   }
   if (c.size() == 0) return;
   gather_cluster_forces(c, d);

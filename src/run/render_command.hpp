@@ -1,6 +1,8 @@
 #pragma once
 // `orogen render DIR`: draws every output step of a run as a PNG frame and assembles an
-// animation (MP4 and GIF).
+// animation (MP4 and GIF). Optionally overlays each disc's displacement over the last three
+// outputs as arrows (thesis Fig 5.11); `--color field:max_rel_disp` draws the maximum relative
+// displacement of neighbours (Fig 5.7) with the "hot" colormap from 0 to its 99th percentile.
 #include <filesystem>
 #include <string>
 
@@ -13,6 +15,9 @@ struct RenderCommandOptions {
   int every = 1;                   // draw every n-th output
   int fps = 12;
   bool animation = true;
+  bool vectors = false;            // arrows from the snapshot fields disp3_x, disp3_y
+  double vector_scale = 1.0;       // arrow length per unit displacement (1: true length)
+  int vector_stride = 1;           // draw every n-th disc's arrow
 };
 
 // Exit codes: 0 done, 2 bad input.

@@ -34,9 +34,9 @@ void save_world(ArchiveWriter& out, World& w) {
 
   auto& L = w.neighbors;
   out.put("nl.first", L.first); out.put("nl.second", L.second); out.put("nl.xi", L.xi);
-  out.put("nl.gamma_n", L.gamma_n); out.put("nl.gamma_s", L.gamma_s);
+  out.put("nl.gamma_n", L.gamma_n);
   out.put("nl.id_first", L.id_first); out.put("nl.id_second", L.id_second);
-  out.put("nl.disc_start", L.disc_start); out.put("nl.disc_entries", L.disc_entries);
+  out.put("nl.chunk_start", L.chunk_start);
   out.put("nl.walls.wall", L.walls.wall); out.put("nl.walls.disc", L.walls.disc);
   out.put("nl.walls.xi", L.walls.xi); out.put("nl.walls.gamma_n", L.walls.gamma_n);
   out.put("nl.walls.mass", L.walls.mass);
@@ -98,9 +98,9 @@ void load_world(const ArchiveReader& in, World& w) {
 
   auto& L = w.neighbors;
   in.get("nl.first", L.first); in.get("nl.second", L.second); in.get("nl.xi", L.xi);
-  in.get("nl.gamma_n", L.gamma_n); in.get("nl.gamma_s", L.gamma_s);
+  in.get("nl.gamma_n", L.gamma_n);
   in.get("nl.id_first", L.id_first); in.get("nl.id_second", L.id_second);
-  in.get("nl.disc_start", L.disc_start); in.get("nl.disc_entries", L.disc_entries);
+  in.get("nl.chunk_start", L.chunk_start);
   in.get("nl.walls.wall", L.walls.wall); in.get("nl.walls.disc", L.walls.disc);
   in.get("nl.walls.xi", L.walls.xi); in.get("nl.walls.gamma_n", L.walls.gamma_n);
   in.get("nl.walls.mass", L.walls.mass);
