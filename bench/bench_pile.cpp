@@ -245,7 +245,8 @@ Result run_stage(const World& settled, const std::string& mode, int threads, std
   omp_set_num_threads(threads);
   if (mode == "push") w.walls[kLeft].vx = vpush;
   // Build the list outside the timed part, as LAMMPS's setup does before "Loop time".
-  if (needs_rebuild(w.neighbors, w.discs, w.walls)) {
+  if (pack_discs(w.discs, w.neighbors, w.scratch) + wall_displacement(w.neighbors, w.walls) >
+      0.5 * w.neighbors.skin) {
     build_neighbor_list(w.neighbors, w.discs, w.clusters, w.walls, w.law, w.dt, true);
   }
   const std::uint64_t builds0 = w.neighbors.builds;

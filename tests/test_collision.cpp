@@ -29,7 +29,7 @@ CollisionResult collide(double e, double v0) {
   for (int s = 0; s < 200000 && t_end < 0; ++s) {
     w.advance();
     const double gap = w.discs.x[1] - w.discs.x[0] - 1.0;
-    const bool pushing = std::fabs(w.discs.fx[0]) > 0;
+    const bool pushing = std::fabs(w.scratch.forces[0].fx) > 0;
     if (pushing && t_start < 0) t_start = w.time - w.dt;
     if (t_start >= 0 && !pushing && gap < 0.2) t_end = w.time - w.dt;
   }

@@ -74,7 +74,6 @@ Discs make_discs(int n) {
     d.cluster_id[i] = i % 2 ? 7 : -1;
     d.motion[i] = static_cast<std::uint8_t>(i % 3 == 0 ? Motion::Kinematic : Motion::Dynamic);
     d.depth0[i] = 0.25 * i;
-    d.fx[i] = 99.0;  // force accumulators are not stored
   }
   if (n > 1) d.x0[1] = std::numeric_limits<double>::quiet_NaN();
   return d;

@@ -4,8 +4,8 @@
 
 namespace orogen {
 
-void add_wall_forces(NeighborList& L, Discs& d, const std::vector<Wall>& walls,
-                     const ContactLaw& law, double dt) {
+void add_wall_forces(NeighborList& L, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
+                     double dt, std::vector<DiscForce>& forces) {
   auto& wc = L.walls;
   for (std::size_t k = 0; k < wc.size(); ++k) {
     const auto& w = walls[wc.wall[k]];
@@ -60,9 +60,9 @@ void add_wall_forces(NeighborList& L, Discs& d, const std::vector<Wall>& walls,
       }
     }
     wc.touching[k] = 1;
-    d.fx[i] += fn * nx + ft * tx;
-    d.fy[i] += fn * ny + ft * ty;
-    d.torque[i] += -r * ft;
+    forces[i].fx += fn * nx + ft * tx;
+    forces[i].fy += fn * ny + ft * ty;
+    forces[i].torque += -r * ft;
   }
 }
 

@@ -11,24 +11,39 @@ constexpr double kTableStep = 0.01;  // in omega0 dt
 constexpr int kTableSize = 101;      // covers omega0 dt up to 1 (the stable limit is ~0.63)
 }  // namespace
 
-double ContactLaw::gamma_n(double m_eff, double dt) const {
-  if (damping == NormalDamping::PerMass) return damping_rate * m_eff;
+namespace {
+// Table position of omega0 dt: entry k and the interpolation weight of entry k + 1.
+std::pair<int, double> table_position(double kn, double m_eff, double dt) {
+  const double omega0 = std::sqrt(kn / m_eff);
+  const double u = std::min(omega0 * dt / kTableStep, kTableSize - 1.0);
+  const int k = std::min(static_cast<int>(u), kTableSize - 2);
+  return {k, u - k};
+}
+}  // namespace
+
+double ContactLaw::zeta_entry(int k) const {
   if (table_e_ != restitution) {
     // Entries are filled on first use: a run only touches the few near its omega0 dt.
     zeta_table_.assign(kTableSize, -1.0);
     table_e_ = restitution;
   }
-  auto entry = [&](int k) {
-    if (zeta_table_[k] < 0)
-      zeta_table_[k] = k == 0 ? damping_ratio_for_restitution(restitution)
-                              : discrete_damping_ratio(restitution, k * kTableStep);
-    return zeta_table_[k];
-  };
-  const double omega0 = std::sqrt(kn / m_eff);
-  const double u = std::min(omega0 * dt / kTableStep, kTableSize - 1.0);
-  const int k = std::min(static_cast<int>(u), kTableSize - 2);
-  const double f = u - k;
-  const double zeta = (1 - f) * entry(k) + f * entry(k + 1);
+  if (zeta_table_[k] < 0)
+    zeta_table_[k] = k == 0 ? damping_ratio_for_restitution(restitution)
+                            : discrete_damping_ratio(restitution, k * kTableStep);
+  return zeta_table_[k];
+}
+
+void ContactLaw::prepare_damping(double m_lo, double m_hi, double dt) const {
+  if (damping == NormalDamping::PerMass) return;
+  // Larger masses sit lower in the table (omega0 dt falls with mass).
+  const int k_lo = table_position(kn, m_hi, dt).first, k_hi = table_position(kn, m_lo, dt).first;
+  for (int k = k_lo; k <= k_hi + 1; ++k) zeta_entry(k);
+}
+
+double ContactLaw::gamma_n(double m_eff, double dt) const {
+  if (damping == NormalDamping::PerMass) return damping_rate * m_eff;
+  const auto [k, f] = table_position(kn, m_eff, dt);
+  const double zeta = (1 - f) * zeta_entry(k) + f * zeta_entry(k + 1);
   return 2.0 * zeta * std::sqrt(kn * m_eff);
 }
 

@@ -24,8 +24,12 @@ struct ContactLaw {
   // For Restitution the damping ratio is calibrated to the discrete integrator (see
   // discrete_damping_ratio), so a collision rebounds with e at the time step actually used.
   double gamma_n(double m_eff, double dt) const;
+  // Fills the damping table for effective masses in [m_lo, m_hi] at step dt (gamma_n fills
+  // it lazily otherwise; call this before calling gamma_n from several threads).
+  void prepare_damping(double m_lo, double m_hi, double dt) const;
 
  private:
+  double zeta_entry(int k) const;
   mutable double table_e_ = -1;               // restitution the table was built for
   mutable std::vector<double> zeta_table_;    // damping ratio against omega0 dt
 };

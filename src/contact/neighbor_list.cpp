@@ -58,6 +58,20 @@ double pair_mass(double ma, double mb) {
   return ma * mb / (ma + mb);
 }
 
+// Fills the damping table for every pair and wall mass this world can produce, so that the
+// parallel pair search only reads it.
+void prepare_damping(const ContactLaw& law, const Discs& d, const Clusters& c, double dt) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const double m = resisting_mass(d, c, static_cast<std::uint32_t>(i));
+    if (std::isinf(m)) continue;
+    lo = std::min(lo, m);
+    hi = std::max(hi, m);
+  }
+  if (hi == 0) return;
+  law.prepare_damping(0.5 * lo, hi, dt);
+}
+
 // Sorts discs into cells (counting sort); returns disc indices in cell order and cell starts.
 void bin_discs(const Discs& d, const Grid& g, std::vector<std::uint32_t>& order,
                std::vector<std::uint32_t>& cell_start) {
@@ -110,63 +124,99 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
   }
 
   // Pairs: each cell against itself and its four forward neighbours in traversal order:
-  // (u, v+1) in its own stripe and (u+1, v-1), (u+1, v), (u+1, v+1) in the next.
-  L.first.clear(); L.second.clear(); L.xi.clear(); L.gamma_n.clear();
-  L.id_first.clear(); L.id_second.clear();
-  auto consider = [&](std::uint32_t a, std::uint32_t b) {
-    if (d.cluster_id[a] >= 0 && d.cluster_id[a] == d.cluster_id[b]) return;
-    if (!d.is_dynamic(a) && !d.is_dynamic(b)) return;
-    const double dx = d.x[b] - d.x[a], dy = d.y[b] - d.y[a];
-    const double reach = d.radius[a] + d.radius[b] + L.skin;
-    const double dist2 = dx * dx + dy * dy;
-    if (dist2 >= reach * reach) return;
-    const double overlap = d.radius[a] + d.radius[b] - std::sqrt(dist2);
-    const double ratio = overlap / std::min(d.radius[a], d.radius[b]);
-    if (ratio > stats.max_overlap_ratio) { stats.max_overlap_ratio = ratio; stats.worst_a = a; stats.worst_b = b; }
-    if (d.id[a] > d.id[b]) std::swap(a, b);
-    const double m = pair_mass(resisting_mass(d, c, a), resisting_mass(d, c, b));
-    L.first.push_back(a);
-    L.second.push_back(b);
-    L.id_first.push_back(d.id[a]);
-    L.id_second.push_back(d.id[b]);
-    L.xi.push_back(pair_history.find(d.id[a], d.id[b]));
-    L.gamma_n.push_back(law.gamma_n(m, dt));
-  };
-  // Chunks of whole stripes, at most kMaxChunks of them: a number fixed by the geometry alone,
-  // so that the order of the force sums never depends on the thread count.
+  // (u, v+1) in its own stripe and (u+1, v-1), (u+1, v), (u+1, v+1) in the next. Chunks of
+  // whole stripes, at most kMaxChunks of them: a number fixed by the geometry alone, so that
+  // the order of the force sums never depends on the thread count. Chunks are searched in
+  // parallel into lists of their own, joined in chunk order.
   constexpr std::int64_t kMaxChunks = 64;
   const std::int64_t stripes_per_chunk = (g.nu() + kMaxChunks - 1) / kMaxChunks;
-  L.chunk_start.clear();
+  const std::int64_t chunks = (g.nu() + stripes_per_chunk - 1) / stripes_per_chunk;
+  prepare_damping(law, d, c, dt);  // the damping table is filled serially, read in parallel
+  struct ChunkPairs {
+    std::vector<std::uint32_t> first, second;
+    std::vector<std::int64_t> id_first, id_second;
+    std::vector<double> xi, gamma_n;
+    BuildStats stats;
+  };
+  std::vector<ChunkPairs> found(static_cast<std::size_t>(chunks));
   const std::int64_t neighbours[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};  // (du, dv)
-  for (std::int64_t u = 0; u < g.nu(); ++u) {
-    if (u % stripes_per_chunk == 0) L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
-    for (std::int64_t v = 0; v < g.nv(); ++v) {
-      const auto cell = static_cast<std::size_t>(u * g.nv() + v);
-      for (auto s = cell_start[cell]; s < cell_start[cell + 1]; ++s) {
-        const auto a = order[s];
-        for (auto t = s + 1; t < cell_start[cell + 1]; ++t) consider(a, order[t]);
-        for (const auto& nb : neighbours) {
-          const std::int64_t ou = u + nb[0], ov = v + nb[1];
-          if (ov < 0 || ov >= g.nv() || ou >= g.nu()) continue;
-          const auto other = static_cast<std::size_t>(ou * g.nv() + ov);
-          for (auto t = cell_start[other]; t < cell_start[other + 1]; ++t) consider(a, order[t]);
+#pragma omp parallel for schedule(dynamic, 1) if (static_cast<std::ptrdiff_t>(n) > kMinParallelItems)
+  for (std::int64_t k = 0; k < chunks; ++k) {
+    ChunkPairs& out = found[static_cast<std::size_t>(k)];
+    auto consider = [&](std::uint32_t a, std::uint32_t b) {
+      if (d.cluster_id[a] >= 0 && d.cluster_id[a] == d.cluster_id[b]) return;
+      if (!d.is_dynamic(a) && !d.is_dynamic(b)) return;
+      const double dx = d.x[b] - d.x[a], dy = d.y[b] - d.y[a];
+      const double reach = d.radius[a] + d.radius[b] + L.skin;
+      const double dist2 = dx * dx + dy * dy;
+      if (dist2 >= reach * reach) return;
+      const double overlap = d.radius[a] + d.radius[b] - std::sqrt(dist2);
+      const double ratio = overlap / std::min(d.radius[a], d.radius[b]);
+      if (ratio > out.stats.max_overlap_ratio) {
+        out.stats.max_overlap_ratio = ratio; out.stats.worst_a = a; out.stats.worst_b = b;
+      }
+      if (d.id[a] > d.id[b]) std::swap(a, b);
+      const double m = pair_mass(resisting_mass(d, c, a), resisting_mass(d, c, b));
+      out.first.push_back(a);
+      out.second.push_back(b);
+      out.id_first.push_back(d.id[a]);
+      out.id_second.push_back(d.id[b]);
+      out.xi.push_back(pair_history.find(d.id[a], d.id[b]));
+      out.gamma_n.push_back(law.gamma_n(m, dt));
+    };
+    const std::int64_t u_end = std::min(g.nu(), (k + 1) * stripes_per_chunk);
+    for (std::int64_t u = k * stripes_per_chunk; u < u_end; ++u) {
+      for (std::int64_t v = 0; v < g.nv(); ++v) {
+        const auto cell = static_cast<std::size_t>(u * g.nv() + v);
+        for (auto s = cell_start[cell]; s < cell_start[cell + 1]; ++s) {
+          const auto a = order[s];
+          for (auto t = s + 1; t < cell_start[cell + 1]; ++t) consider(a, order[t]);
+          for (const auto& nb : neighbours) {
+            const std::int64_t ou = u + nb[0], ov = v + nb[1];
+            if (ov < 0 || ov >= g.nv() || ou >= g.nu()) continue;
+            const auto other = static_cast<std::size_t>(ou * g.nv() + ov);
+            for (auto t = cell_start[other]; t < cell_start[other + 1]; ++t) consider(a, order[t]);
+          }
         }
       }
     }
   }
+  L.first.clear(); L.second.clear(); L.xi.clear(); L.gamma_n.clear();
+  L.id_first.clear(); L.id_second.clear();
+  L.chunk_start.clear();
+  for (const auto& f : found) {
+    L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
+    L.first.insert(L.first.end(), f.first.begin(), f.first.end());
+    L.second.insert(L.second.end(), f.second.begin(), f.second.end());
+    L.id_first.insert(L.id_first.end(), f.id_first.begin(), f.id_first.end());
+    L.id_second.insert(L.id_second.end(), f.id_second.begin(), f.id_second.end());
+    L.xi.insert(L.xi.end(), f.xi.begin(), f.xi.end());
+    L.gamma_n.insert(L.gamma_n.end(), f.gamma_n.begin(), f.gamma_n.end());
+    if (f.stats.max_overlap_ratio > stats.max_overlap_ratio) {
+      stats.max_overlap_ratio = f.stats.max_overlap_ratio;
+      stats.worst_a = f.stats.worst_a;
+      stats.worst_b = f.stats.worst_b;
+    }
+  }
   L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
 
-  // Wall contacts: every disc within reach of each enabled wall, in wall then disc order.
+  // Wall contacts: every disc within reach of each enabled wall, in wall then disc order
+  // (the distance test in parallel, the list in order).
   L.walls.clear();
   L.wall_disc_id.clear();
+  std::vector<std::uint8_t> near(n);
   for (std::size_t w = 0; w < walls.size(); ++w) {
     if (!walls[w].enabled) continue;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!d.is_dynamic(i)) continue;
+    const auto count = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static) if (count > kMinParallelItems)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
       double cx, cy;
       const double dist2 = closest_point_on_segment(walls[w], d.x[i], d.y[i], cx, cy);
       const double reach = d.radius[i] + L.skin;
-      if (dist2 >= reach * reach) continue;
+      near[i] = d.is_dynamic(i) && dist2 < reach * reach;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!near[i]) continue;
       L.walls.wall.push_back(static_cast<std::uint32_t>(w));
       L.walls.disc.push_back(static_cast<std::uint32_t>(i));
       L.walls.xi.push_back(wall_history.find(d.id[i], static_cast<std::int64_t>(w)));
@@ -191,24 +241,15 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
   return stats;
 }
 
-bool needs_rebuild(const NeighborList& L, const Discs& d, const std::vector<Wall>& walls) {
-  if (!L.valid || L.x_ref.size() != d.size() || L.wall_ax_ref.size() != walls.size()) return true;
-  double wall_move = 0;
+double wall_displacement(const NeighborList& L, const std::vector<Wall>& walls) {
+  if (L.wall_ax_ref.size() != walls.size()) return std::numeric_limits<double>::infinity();
+  double moved = 0;
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const double a = std::hypot(walls[w].ax - L.wall_ax_ref[w], walls[w].ay - L.wall_ay_ref[w]);
     const double b = std::hypot(walls[w].bx - L.wall_bx_ref[w], walls[w].by - L.wall_by_ref[w]);
-    wall_move = std::max(wall_move, std::max(a, b));
+    moved = std::max(moved, std::max(a, b));
   }
-  double max2 = 0;
-  const auto n = static_cast<std::ptrdiff_t>(d.size());
-#pragma omp parallel for schedule(static) reduction(max : max2) if (n > kMinParallelItems)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const double dx = d.x[i] - L.x_ref[i], dy = d.y[i] - L.y_ref[i];
-    const double m2 = dx * dx + dy * dy;
-    // Written so that NaN forces a rebuild, where it is caught.
-    max2 = (m2 <= max2) ? max2 : (m2 == m2 ? m2 : std::numeric_limits<double>::infinity());
-  }
-  return std::sqrt(max2) + wall_move > 0.5 * L.skin;
+  return moved;
 }
 
 }  // namespace orogen

@@ -54,7 +54,8 @@ struct BuildStats {
 BuildStats build_neighbor_list(NeighborList& list, Discs& discs, Clusters& clusters,
                                const std::vector<Wall>& walls, const ContactLaw& law, double dt, bool sort);
 
-// Largest squared displacement since the last build, plus the largest wall movement.
-bool needs_rebuild(const NeighborList& list, const Discs& discs, const std::vector<Wall>& walls);
+// Largest displacement of a wall end since the last build (infinite if the walls changed).
+// The list is rebuilt when this plus the largest disc displacement exceeds half the skin.
+double wall_displacement(const NeighborList& list, const std::vector<Wall>& walls);
 
 }  // namespace orogen

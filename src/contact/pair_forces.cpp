@@ -3,19 +3,14 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "contact/contact_block.hpp"
 #include "util/parallel.hpp"
 
 namespace orogen {
 namespace {
-
-void pack_discs(const Discs& d, std::vector<ContactDisc>& out) {
-  const auto n = static_cast<std::ptrdiff_t>(d.size());
-  out.resize(d.size());
-#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
-  for (std::ptrdiff_t i = 0; i < n; ++i) out[i] = {d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i], d.radius[i]};
-}
 
 // Gathers the touching pairs among [p0, p0 + count) into the block (their pair numbers in
 // `pair`), zeroes the history of the others, and runs the block kernel on the touching ones.
@@ -58,24 +53,45 @@ void chunk_forces(NeighborList& L, const ContactDisc* c, const ContactLaw& law, 
 
 }  // namespace
 
-void compute_pair_forces(NeighborList& L, Discs& d, const ContactLaw& law, double dt, PairScratch& s) {
-  pack_discs(d, s.discs);
-  s.forces.assign(d.size(), DiscForce{0.0, 0.0, 0.0});
+double pack_discs(const Discs& d, const NeighborList& L, PairScratch& s) {
+  const auto n = static_cast<std::ptrdiff_t>(d.size());
+  s.discs.resize(d.size());
+  s.forces.resize(d.size());
+  ContactDisc* c = s.discs.data();
+  const bool matches = L.valid && L.x_ref.size() == d.size();
+  const double* xr = matches ? L.x_ref.data() : d.x.data();
+  const double* yr = matches ? L.y_ref.data() : d.y.data();
+  double max2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : max2) if (n > kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    c[i] = {d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i], d.radius[i]};
+    const double dx = d.x[i] - xr[i], dy = d.y[i] - yr[i];
+    const double m2 = dx * dx + dy * dy;
+    // Written so that NaN counts as infinitely far: it forces a rebuild, where it is caught.
+    max2 = (m2 <= max2) ? max2 : (m2 == m2 ? m2 : std::numeric_limits<double>::infinity());
+  }
+  return matches ? std::sqrt(max2) : std::numeric_limits<double>::infinity();
+}
+
+void compute_pair_forces(NeighborList& L, const ContactLaw& law, double dt, PairScratch& s) {
   const ContactDisc* c = s.discs.data();
   DiscForce* force = s.forces.data();
-  // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in parallel
-  // without races, and every disc sums its pairs in the same order for any thread count.
+  const auto n = static_cast<std::ptrdiff_t>(s.forces.size());
   const auto chunks = static_cast<std::ptrdiff_t>(L.chunk_start.size()) - 1;
   const bool parallel = static_cast<std::ptrdiff_t>(L.size()) >= kMinParallelItems && omp_get_max_threads() > 1;
-  for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
-#pragma omp parallel for schedule(dynamic, 1) if (parallel)
-    for (std::ptrdiff_t k = parity; k < chunks; k += 2)
-      chunk_forces(L, c, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
-  }
-  const auto n = static_cast<std::ptrdiff_t>(d.size());
-#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    d.fx[i] = force[i].fx; d.fy[i] = force[i].fy; d.torque[i] = force[i].torque;
+  // One thread team for the stage: clear, even chunks, odd chunks.
+#pragma omp parallel if (parallel)
+  {
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i) force[i] = {0.0, 0.0, 0.0};
+    // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in
+    // parallel without races, and every disc sums its pairs in the same order for any number
+    // of threads.
+    for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
+#pragma omp for schedule(dynamic, 1)
+      for (std::ptrdiff_t k = parity; k < chunks; k += 2)
+        chunk_forces(L, c, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
+    }
   }
 }
 

@@ -20,15 +20,21 @@ struct DiscForce {
   double fx, fy, torque;
 };
 
-// Scratch of the force loop: packed discs and their force sums.
+// Per-step scratch of the force stages: the packed discs, and the force and torque summed on
+// each disc (by disc index) that integration then uses.
 struct PairScratch {
   std::vector<ContactDisc> discs;
   std::vector<DiscForce> forces;
 };
 
+// Packs the discs for the force loop and returns the largest displacement of a disc since the
+// last neighbour-list build (infinite when the list does not match the discs): one pass over
+// the positions serves both.
+double pack_discs(const Discs& discs, const NeighborList& list, PairScratch& scratch);
+
 // Sets discs' force and torque to the sum of their contact forces, chunk by chunk (see
 // NeighborList::chunk_start): bitwise the same result for any number of threads.
-void compute_pair_forces(NeighborList& list, Discs& discs, const ContactLaw& law, double dt,
-                         PairScratch& scratch);
+// Uses the packed discs of the scratch; forces start from zero.
+void compute_pair_forces(NeighborList& list, const ContactLaw& law, double dt, PairScratch& scratch);
 
 }  // namespace orogen

@@ -5,7 +5,7 @@
 
 namespace orogen {
 
-void gather_cluster_forces(Clusters& c, const Discs& d) {
+void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* f) {
   const auto n = static_cast<std::ptrdiff_t>(c.size());
 #pragma omp parallel for schedule(static) if (n > kMinParallelItems)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
@@ -13,15 +13,15 @@ void gather_cluster_forces(Clusters& c, const Discs& d) {
     for (const auto i : c.members[k]) {  // ascending disc-id order: a fixed summation order
       if (i < 0) break;
       const double rx = d.x[i] - c.x[k], ry = d.y[i] - c.y[k];
-      fx += d.fx[i];
-      fy += d.fy[i];
-      tq += d.torque[i] + rx * d.fy[i] - ry * d.fx[i];
+      fx += f[i].fx;
+      fy += f[i].fy;
+      tq += f[i].torque + rx * f[i].fy - ry * f[i].fx;
     }
     c.fx[k] = fx; c.fy[k] = fy; c.torque[k] = tq;
   }
 }
 
-void integrate(Discs& d, Clusters& c, const BodyForce& g, double dt) {
+void integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt) {
   const auto n = static_cast<std::ptrdiff_t>(d.size());
   const double damp = 1.0 - g.drag * dt;
   // Written without branches so that it vectorises. Cluster discs are updated here too, for
@@ -32,18 +32,15 @@ void integrate(Discs& d, Clusters& c, const BodyForce& g, double dt) {
   double* __restrict x = d.x.data();
   double* __restrict y = d.y.data();
   double* __restrict theta = d.theta.data();
-  const double* __restrict fx = d.fx.data();
-  const double* __restrict fy = d.fy.data();
-  const double* __restrict tq = d.torque.data();
   const double* __restrict inv_m = d.inv_mass.data();
   const double* __restrict inv_i = d.inv_inertia.data();
   const std::uint8_t* __restrict motion = d.motion.data();
 #pragma omp parallel for simd schedule(static) if (n > kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const bool dynamic = motion[i] == static_cast<std::uint8_t>(Motion::Dynamic);
-    const double vx_new = damp * vx[i] + (fx[i] * inv_m[i] + g.gx) * dt;
-    const double vy_new = damp * vy[i] + (fy[i] * inv_m[i] + g.gy) * dt;
-    const double w_new = damp * omega[i] + tq[i] * inv_i[i] * dt;
+    const double vx_new = damp * vx[i] + (force[i].fx * inv_m[i] + g.gx) * dt;
+    const double vy_new = damp * vy[i] + (force[i].fy * inv_m[i] + g.gy) * dt;
+    const double w_new = damp * omega[i] + force[i].torque * inv_i[i] * dt;
     vx[i] = dynamic ? vx_new : vx[i];
     vy[i] = dynamic ? vy_new : vy[i];
     omega[i] = dynamic ? w_new : omega[i];
@@ -52,7 +49,7 @@ void integrate(Discs& d, Clusters& c, const BodyForce& g, double dt) {
     theta[i] += omega[i] * dt;
   }
   if (c.size() == 0) return;
-  gather_cluster_forces(c, d);
+  gather_cluster_forces(c, d, force);
   const auto nc = static_cast<std::ptrdiff_t>(c.size());
 #pragma omp parallel for schedule(static) if (nc > kMinParallelItems)
   for (std::ptrdiff_t k = 0; k < nc; ++k) {

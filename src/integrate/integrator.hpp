@@ -1,6 +1,7 @@
 #pragma once
 // Semi-implicit (symplectic) Euler, as in the thesis (MODEL §4): velocities from forces,
 // then positions from the new velocities, for free discs and for rigid cluster bodies.
+#include "contact/pair_forces.hpp"
 #include "particles/clusters.hpp"
 #include "particles/discs.hpp"
 
@@ -11,11 +12,12 @@ struct BodyForce {
   double drag = 0.0;           // extra viscous drag rate (1/time), used only while settling
 };
 
-// Sums member disc forces onto each cluster (centre-of-mass force and torque about it).
-void gather_cluster_forces(Clusters& clusters, const Discs& discs);
+// Sums member disc forces (by disc index) onto each cluster: force, and torque about its
+// centre of mass.
+void gather_cluster_forces(Clusters& clusters, const Discs& discs, const DiscForce* forces);
 
-// Advances free discs and cluster bodies by dt and then places member discs on their bodies.
-// Kinematic discs and bodies move with their imposed velocity.
-void integrate(Discs& discs, Clusters& clusters, const BodyForce& body, double dt);
+// Advances free discs and cluster bodies by dt under the given disc forces, then places member
+// discs on their bodies. Kinematic discs and bodies move with their imposed velocity.
+void integrate(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body, double dt);
 
 }  // namespace orogen

@@ -9,7 +9,6 @@ std::size_t Discs::add(std::int64_t disc_id, double px, double py, double r) {
   const double inertia = 0.5 * m * r * r;
   x.push_back(px); y.push_back(py); vx.push_back(0); vy.push_back(0);
   theta.push_back(0); omega.push_back(0);
-  fx.push_back(0); fy.push_back(0); torque.push_back(0);
   radius.push_back(r); mass.push_back(m); inv_mass.push_back(1.0 / m); inv_inertia.push_back(1.0 / inertia);
   id.push_back(disc_id); cluster_id.push_back(-1); cluster.push_back(kNoCluster);
   body_dx.push_back(0); body_dy.push_back(0);

@@ -19,8 +19,6 @@ constexpr std::int32_t kNoCluster = -1;
 struct Discs {
   // State.
   std::vector<double> x, y, vx, vy, theta, omega;
-  // Force and torque accumulated in the current step.
-  std::vector<double> fx, fy, torque;
   // Geometry and inertia (a disc of radius r has mass pi r^2 and inertia m r^2 / 2).
   std::vector<double> radius, mass, inv_mass, inv_inertia;
   // Identity: stable disc id, stable cluster id (-1 for a free disc) and the index of the
@@ -40,7 +38,6 @@ struct Discs {
   template <class F>
   void for_each_array(F&& f) {
     f("x", x); f("y", y); f("vx", vx); f("vy", vy); f("theta", theta); f("omega", omega);
-    f("fx", fx); f("fy", fy); f("torque", torque);
     f("radius", radius); f("mass", mass); f("inv_mass", inv_mass); f("inv_inertia", inv_inertia);
     f("id", id); f("cluster_id", cluster_id); f("cluster", cluster);
     f("body_dx", body_dx); f("body_dy", body_dy); f("motion", motion);
