@@ -242,7 +242,8 @@ void draw_colorbar(cairo_t* cr, const Frame& f, const RenderOptions& opt, const 
     cairo_move_to(cr, x + w, py);
     cairo_line_to(cr, x + w + 0.3 * fs, py);
     cairo_stroke(cr);
-    const double v = r.lo + t * (r.hi - r.lo);
+    double v = r.lo + t * (r.hi - r.lo);
+    if (std::abs(v) < 1e-6 * std::abs(r.hi - r.lo)) v = 0.0;  // print 0, not round-off like 2e-17
     show_text_at(cr, fmt::format("{:.3g}", v), x + w + 0.45 * fs, py, 0.0, 1.0 - t);
   }
   cairo_save(cr);
