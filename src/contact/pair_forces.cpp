@@ -12,19 +12,23 @@
 namespace orogen {
 namespace {
 
+// The disc arrays the contact loop reads.
+struct DiscView {
+  const double *x, *y, *vx, *vy, *omega, *radius;
+};
+
 // Gathers the touching pairs among [p0, p0 + count) into the block (their pair numbers in
 // `pair`), zeroes the history of the others, and runs the block kernel on the touching ones.
-int compute_block(NeighborList& L, const ContactDisc* c, const ContactLaw& law, double dt, std::size_t p0,
+int compute_block(NeighborList& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t p0,
                   int count, ContactBlock& b, std::uint32_t* pair) {
   int m = 0;
   for (int k = 0; k < count; ++k) {
     const std::size_t p = p0 + k;
-    const ContactDisc& a = c[L.first[p]];
-    const ContactDisc& o = c[L.second[p]];
-    const double dx = o.x - a.x, dy = o.y - a.y, rsum = a.radius + o.radius;
+    const auto i = L.first[p], j = L.second[p];
+    const double dx = d.x[j] - d.x[i], dy = d.y[j] - d.y[i], rsum = d.radius[i] + d.radius[j];
     if (dx * dx + dy * dy >= rsum * rsum) { L.xi[p] = 0; continue; }
-    b.dx[m] = dx; b.dy[m] = dy; b.ri[m] = a.radius; b.rj[m] = o.radius;
-    b.dvx[m] = o.vx - a.vx; b.dvy[m] = o.vy - a.vy; b.wi[m] = a.omega; b.wj[m] = o.omega;
+    b.dx[m] = dx; b.dy[m] = dy; b.ri[m] = d.radius[i]; b.rj[m] = d.radius[j];
+    b.dvx[m] = d.vx[j] - d.vx[i]; b.dvy[m] = d.vy[j] - d.vy[i]; b.wi[m] = d.omega[i]; b.wj[m] = d.omega[j];
     b.gn[m] = L.gamma_n[p];
     b.gs[m] = law.tangential_damping_ratio * b.gn[m];
     b.xi[m] = L.xi[p];
@@ -36,45 +40,27 @@ int compute_block(NeighborList& L, const ContactDisc* c, const ContactLaw& law, 
 }
 
 // All pairs of one chunk, in pair order, added onto the discs' forces.
-void chunk_forces(NeighborList& L, const ContactDisc* c, const ContactLaw& law, double dt, std::size_t begin,
+void chunk_forces(NeighborList& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t begin,
                   std::size_t end, DiscForce* force) {
   ContactBlock b;
   std::uint32_t pair[kContactBlock];
   for (std::size_t p0 = begin; p0 < end; p0 += kContactBlock) {
     const int count = static_cast<int>(std::min<std::size_t>(kContactBlock, end - p0));
-    const int m = compute_block(L, c, law, dt, p0, count, b, pair);
+    const int m = compute_block(L, d, law, dt, p0, count, b, pair);
     for (int k = 0; k < m; ++k) {
       const auto i = L.first[pair[k]], j = L.second[pair[k]];
-      force[i].fx -= b.fx[k]; force[i].fy -= b.fy[k]; force[i].torque += -c[i].radius * b.ft[k];
-      force[j].fx += b.fx[k]; force[j].fy += b.fy[k]; force[j].torque += -c[j].radius * b.ft[k];
+      force[i].fx -= b.fx[k]; force[i].fy -= b.fy[k]; force[i].torque += -b.ri[k] * b.ft[k];
+      force[j].fx += b.fx[k]; force[j].fy += b.fy[k]; force[j].torque += -b.rj[k] * b.ft[k];
     }
   }
 }
 
 }  // namespace
 
-double pack_discs(const Discs& d, const NeighborList& L, PairScratch& s) {
-  const auto n = static_cast<std::ptrdiff_t>(d.size());
-  s.discs.resize(d.size());
-  s.forces.resize(d.size());
-  ContactDisc* c = s.discs.data();
-  const bool matches = L.valid && L.x_ref.size() == d.size();
-  const double* xr = matches ? L.x_ref.data() : d.x.data();
-  const double* yr = matches ? L.y_ref.data() : d.y.data();
-  double max2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max2) if (n > kMinParallelItems)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    c[i] = {d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i], d.radius[i]};
-    const double dx = d.x[i] - xr[i], dy = d.y[i] - yr[i];
-    const double m2 = dx * dx + dy * dy;
-    // Written so that NaN counts as infinitely far: it forces a rebuild, where it is caught.
-    max2 = (m2 <= max2) ? max2 : (m2 == m2 ? m2 : std::numeric_limits<double>::infinity());
-  }
-  return matches ? std::sqrt(max2) : std::numeric_limits<double>::infinity();
-}
-
-void compute_pair_forces(NeighborList& L, const ContactLaw& law, double dt, PairScratch& s) {
-  const ContactDisc* c = s.discs.data();
+void compute_pair_forces(NeighborList& L, const Discs& discs, const ContactLaw& law, double dt, PairScratch& s) {
+  const DiscView d{discs.x.data(), discs.y.data(), discs.vx.data(), discs.vy.data(), discs.omega.data(),
+                   discs.radius.data()};
+  s.forces.resize(discs.size());
   DiscForce* force = s.forces.data();
   const auto n = static_cast<std::ptrdiff_t>(s.forces.size());
   const auto chunks = static_cast<std::ptrdiff_t>(L.chunk_start.size()) - 1;
@@ -90,7 +76,7 @@ void compute_pair_forces(NeighborList& L, const ContactLaw& law, double dt, Pair
     for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
 #pragma omp for schedule(dynamic, 1)
       for (std::ptrdiff_t k = parity; k < chunks; k += 2)
-        chunk_forces(L, c, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
+        chunk_forces(L, d, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
     }
   }
 }

@@ -1,6 +1,9 @@
 #include "integrate/integrator.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include "util/parallel.hpp"
 
 namespace orogen {
@@ -21,7 +24,8 @@ void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* f) {
   }
 }
 
-void integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt) {
+double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt, const double* x_ref,
+                 const double* y_ref) {
   const auto n = static_cast<std::ptrdiff_t>(d.size());
   const double damp = 1.0 - g.drag * dt;
   // Written without branches so that it vectorises. Cluster discs are updated here too, for
@@ -35,7 +39,9 @@ void integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g
   const double* __restrict inv_m = d.inv_mass.data();
   const double* __restrict inv_i = d.inv_inertia.data();
   const std::uint8_t* __restrict motion = d.motion.data();
-#pragma omp parallel for simd schedule(static) if (n > kMinParallelItems)
+  const std::int32_t* __restrict cluster = d.cluster.data();
+  double max2 = 0;
+#pragma omp parallel for simd schedule(static) reduction(max : max2) if (n > kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const bool dynamic = motion[i] == static_cast<std::uint8_t>(Motion::Dynamic);
     const double vx_new = damp * vx[i] + (force[i].fx * inv_m[i] + g.gx) * dt;
@@ -47,8 +53,13 @@ void integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g
     x[i] += vx[i] * dt;
     y[i] += vy[i] * dt;
     theta[i] += omega[i] * dt;
+    const double dx = x[i] - x_ref[i], dy = y[i] - y_ref[i];
+    const double m2 = cluster[i] < 0 ? dx * dx + dy * dy : 0.0;  // member discs: measured below
+    // Written so that NaN counts as infinitely far: it forces a rebuild, where it is caught.
+    max2 = m2 <= max2 ? max2 : (m2 == m2 ? m2 : std::numeric_limits<double>::infinity());
   }
-  if (c.size() == 0) return;
+  const double moved = std::sqrt(max2);
+  if (c.size() == 0) return moved;
   gather_cluster_forces(c, d, force);
   const auto nc = static_cast<std::ptrdiff_t>(c.size());
 #pragma omp parallel for schedule(static) if (nc > kMinParallelItems)
@@ -62,7 +73,8 @@ void integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g
     c.y[k] += c.vy[k] * dt;
     c.theta[k] += c.omega[k] * dt;
   }
-  update_cluster_discs(c, d);
+  const double members = update_cluster_discs(c, d, x_ref, y_ref);
+  return members == members ? std::max(moved, members) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace orogen

@@ -18,6 +18,10 @@ void gather_cluster_forces(Clusters& clusters, const Discs& discs, const DiscFor
 
 // Advances free discs and cluster bodies by dt under the given disc forces, then places member
 // discs on their bodies. Kinematic discs and bodies move with their imposed velocity.
-void integrate(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body, double dt);
+// Returns the largest distance of a disc from its reference position (x_ref, y_ref by disc
+// index, the positions at the last neighbour-list build): measured here, where the positions
+// are written anyway, rather than in a pass of its own.
+double integrate(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body, double dt,
+                 const double* x_ref, const double* y_ref);
 
 }  // namespace orogen

@@ -71,9 +71,10 @@ void relink_clusters(Clusters& c, Discs& d) {
   }
 }
 
-void update_cluster_discs(const Clusters& c, Discs& d) {
+double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, const double* y_ref) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
+  double max2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : max2) if (n > kMinParallelItems)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const double cs = std::cos(c.theta[k]), sn = std::sin(c.theta[k]);
     for (const auto i : c.members[k]) {
@@ -86,8 +87,13 @@ void update_cluster_discs(const Clusters& c, Discs& d) {
       d.vy[i] = c.vy[k] + c.omega[k] * rx;
       d.theta[i] = c.theta[k];
       d.omega[i] = c.omega[k];
+      if (x_ref) {
+        const double dx = d.x[i] - x_ref[i], dy = d.y[i] - y_ref[i];
+        max2 = std::max(max2, dx * dx + dy * dy);
+      }
     }
   }
+  return std::sqrt(max2);
 }
 
 }  // namespace orogen

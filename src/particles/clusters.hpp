@@ -47,6 +47,9 @@ std::size_t make_cluster(Clusters& clusters, Discs& discs, std::span<const std::
 void relink_clusters(Clusters& clusters, Discs& discs);
 
 // Places member discs at the pose of their bodies and gives them the body's rigid velocity.
-void update_cluster_discs(const Clusters& clusters, Discs& discs);
+// With reference positions (by disc index), returns the largest distance of a member disc
+// from its reference (0 without).
+double update_cluster_discs(const Clusters& clusters, Discs& discs, const double* x_ref = nullptr,
+                            const double* y_ref = nullptr);
 
 }  // namespace orogen

@@ -31,16 +31,14 @@ void check_build(const BuildStats& s, const World& w) {
 }  // namespace
 
 void World::advance() {
-  // One pass packs the discs for the force loop and measures how far they moved.
-  const double moved = pack_discs(discs, neighbors, scratch);
-  if (moved + wall_displacement(neighbors, walls) > 0.5 * neighbors.skin) {
+  const bool list_matches = neighbors.valid && neighbors.x_ref.size() == discs.size();
+  if (!list_matches || moved + wall_displacement(neighbors, walls) > 0.5 * neighbors.skin) {
     const bool sort = sort_every > 0 && neighbors.builds % static_cast<std::uint64_t>(sort_every) == 0;
     check_build(build_neighbor_list(neighbors, discs, clusters, walls, law, dt, sort), *this);
-    pack_discs(discs, neighbors, scratch);
   }
-  compute_pair_forces(neighbors, law, dt, scratch);
+  compute_pair_forces(neighbors, discs, law, dt, scratch);
   add_wall_forces(neighbors, discs, walls, law, dt, scratch.forces);
-  integrate(discs, clusters, scratch.forces.data(), body, dt);
+  moved = integrate(discs, clusters, scratch.forces.data(), body, dt, neighbors.x_ref.data(), neighbors.y_ref.data());
   for (auto& w : walls) {
     w.ax += w.vx * dt; w.bx += w.vx * dt;
     w.ay += w.vy * dt; w.by += w.vy * dt;

@@ -50,6 +50,7 @@ struct World {
   BodyForce body;
   NeighborList neighbors;
   PairScratch scratch;
+  double moved = 0;  // largest disc displacement since the last list build (from integration)
   double dt = 1e-3;
   double time = 0;
   std::uint64_t step = 0;

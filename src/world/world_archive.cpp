@@ -58,6 +58,7 @@ void save_world(ArchiveWriter& out, World& w) {
   out.put_scalar("world.gx", w.body.gx);
   out.put_scalar("world.gy", w.body.gy);
   out.put_scalar("world.drag", w.body.drag);
+  out.put_scalar("world.moved", w.moved);
 
   std::vector<std::uint64_t> r_step;
   std::vector<double> r_time, r_x, r_y;
@@ -122,6 +123,7 @@ void load_world(const ArchiveReader& in, World& w) {
   w.body.gx = in.get_scalar<double>("world.gx");
   w.body.gy = in.get_scalar<double>("world.gy");
   w.body.drag = in.get_scalar<double>("world.drag");
+  w.moved = in.get_scalar<double>("world.moved");
 
   std::vector<std::uint64_t> r_step;
   std::vector<double> r_time, r_x, r_y;
