@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The README's first command: install what is missing, build, run the main job and draw it.
-# Main job today: the default packing (random discs settling into a layer), rendered as
-# PNG frames and an animation. Output in runs/main (replaced on every call).
+# Main job: the default doubly-vergent wedge (traction basal condition, random 3-disc clusters,
+# h0 = 10 d, S up to 8), with PNG frames, an animation and the charts. Output in runs/main
+# (replaced on every call).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -10,4 +11,7 @@ cmake --build --preset release
 rm -rf runs/main
 build/release/orogen run --out runs/main
 build/release/orogen render runs/main
-echo "main job done: runs/main (snapshots.h5, series.csv, run.pvd, frames/, animation.mp4, animation.gif)"
+build/release/orogen render runs/main --color field:max_rel_disp --frames-dir frames_faults ||
+  echo "(fault colouring skipped)"
+/usr/bin/python3 python/wedge_charts.py runs/main --out runs/main/charts
+echo "main job done: runs/main (series.csv, snapshots.h5, run.pvd, frames/, animation.mp4, animation.gif, charts/)"

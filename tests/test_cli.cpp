@@ -92,14 +92,15 @@ Result orogen_cli(const std::string& args, const fs::path& scratch) {
 // kMinParallelItems (4096) discs or pairs, so the determinism runs use ~4000-4900 discs and
 // stop after 600 steps (every rest check passes at once with a huge threshold).
 std::string big_short(const std::string& packing) {
-  return "--set particles.packing=" + packing + " --set layer.length=" + (packing == "hexagonal" ? "170" : "160") +
+  return "--set run.experiment=packing --set particles.packing=" + packing + " --set layer.length=" + (packing == "hexagonal" ? "170" : "160") +
          " --set layer.thickness=20 --set settle.relax_time=0 --set settle.ke_threshold=1e9"
          " --set output.interval=0.25 --set output.checkpoint_every=2 --set output.progress=never --set output.vtp=false";
 }
 // Settles for real: ~3000 steps of 45 discs, 7 outputs with a checkpoint every second one.
 // Few outputs: each costs a dozen fsyncs, which dominate these runs.
 const std::string kTiny =
-    "--set particles.packing=random_discs --set layer.length=10 --set layer.thickness=3 --set contact.kn=1000"
+    "--set run.experiment=packing --set particles.packing=random_discs --set layer.length=10"
+    " --set layer.thickness=3 --set contact.kn=1000"
     " --set settle.relax_time=1 --set settle.ke_threshold=1e-3 --set output.interval=2"
     " --set output.checkpoint_every=2 --set output.progress=never --threads 1";
 
@@ -373,7 +374,7 @@ TEST_F(Cli, DefaultRunNeedsNoConfig) {
   const auto printed = orogen_cli("config", dir_);
   ASSERT_EQ(printed.status, 0) << printed.err;
   EXPECT_NE(printed.out.find("[run]"), std::string::npos);
-  EXPECT_NE(printed.out.find("experiment = \"packing\""), std::string::npos);
+  EXPECT_NE(printed.out.find("experiment = \"wedge\""), std::string::npos);
   spit(dir_ / "default.toml", printed.out);
 
   // The printed default reads back and runs ...

@@ -108,9 +108,9 @@ TEST(Config, MissingFileIsNamed) {
 
 TEST(Config, DefaultsWhenNoFile) {
   const Config c = Config::load(std::nullopt, {});
-  EXPECT_EQ(c.get_string("run.experiment"), "packing");
+  EXPECT_EQ(c.get_string("run.experiment"), "wedge");
   EXPECT_EQ(c.get_int("run.seed"), 1);
-  EXPECT_EQ(c.get_string("particles.packing"), "random_discs");
+  EXPECT_EQ(c.get_string("particles.packing"), "random_clusters");
   EXPECT_DOUBLE_EQ(c.get_float("particles.d_min"), 0.7);
   EXPECT_DOUBLE_EQ(c.get_float("contact.kn"), 1e4);
   EXPECT_DOUBLE_EQ(c.get_float("settle.ke_threshold"), 1e-6);

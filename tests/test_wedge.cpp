@@ -13,10 +13,10 @@ TEST(WedgeProbe, Run) {
   const double h0 = std::getenv("PH") ? std::atof(std::getenv("PH")) : 5;
   const double s_end = std::getenv("PS") ? std::atof(std::getenv("PS")) : 2;
   auto t0 = std::chrono::steady_clock::now();
-  Config c = Config::load(std::nullopt, {"run.experiment=wedge", "particles.packing=random_clusters",
+  Config c = Config::load(std::nullopt, {"run.experiment=wedge",
       "layer.thickness=" + std::to_string(h0), "wedge.tile_length=4", "wedge.retro_length=4",
       "wedge.initial_active=5", "wedge.s_end=" + std::to_string(s_end), "wedge.outputs=10",
-      std::string("wedge.basal=") + basal});
+      std::string("wedge.basal=") + basal, std::string("particles.packing=") + (std::getenv("PP") ? std::getenv("PP") : "random_clusters")});
   auto exp = make_experiment(c);
   World w;
   apply_engine_config(c, w);
@@ -25,7 +25,16 @@ TEST(WedgeProbe, Run) {
   std::printf("setup %.2fs, %zu discs dt %g\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), w.discs.size(), w.dt);
   const double interval = *exp->output_interval();
   int k = 1;
+  double vmax_seen = 0;
   while (exp->advance(w)) {
+    if (std::getenv("PT") && w.step % 200 == 0) {
+      for (std::size_t i = 0; i < w.discs.size(); ++i) {
+        const double sp = std::hypot(w.discs.vx[i], w.discs.vy[i]);
+        if (sp > 0.3 && sp > vmax_seen * 0.5) { vmax_seen = std::max(vmax_seen, sp);
+          std::printf("  step %llu S %.3f id %lld x %.2f y %.2f vx %.3f vy %.3f motion %d cl %d wp %.2f\n", (unsigned long long)w.step,
+            exp->fraction_done(w) * s_end, (long long)w.discs.id[i], w.discs.x[i], w.discs.y[i], w.discs.vx[i], w.discs.vy[i], w.discs.motion[i], w.discs.cluster[i], exp->measure(w).back() * 0 + 0.0); }
+      }
+    }
     if (w.time >= k * interval) {
       ++k;
       auto m = exp->measure(w);

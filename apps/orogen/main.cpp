@@ -34,6 +34,8 @@ int main(int argc, char** argv) {
                          "horizons | cluster | field:NAME (field:max_rel_disp uses the hot colormap)")->capture_default_str();
   render_cmd->add_option("--width", render.width_px, "picture width in pixels")->capture_default_str();
   render_cmd->add_option("--every", render.every, "draw every n-th output")->capture_default_str();
+  render_cmd->add_option("--frames-dir", render.frames_name,
+                         "subfolder for the frames (the animation is named after it)")->capture_default_str();
   render_cmd->add_option("--fps", render.fps, "animation frames per second")->capture_default_str();
   render_cmd->add_flag("!--no-animation", render.animation, "only the PNG frames");
   render_cmd->add_flag("--vectors", render.vectors,

@@ -52,12 +52,12 @@ std::string_view KeySpec::key() const {
 
 const std::vector<KeySpec>& schema() {
   static const std::vector<KeySpec> table = {
-      text("run.experiment", "packing", {"packing", "wedge"},
+      text("run.experiment", "wedge", {"packing", "wedge"},
            "what the run does: settle a packing, or grow a doubly-vergent wedge"),
       integer("run.seed", 1, ge(0), "seed of the packing generator"),
       integer("run.threads", 0, ge(0), "OpenMP threads, 0 = all cores"),
 
-      text("particles.packing", "random_discs", {"hexagonal", "random_discs", "random_clusters"},
+      text("particles.packing", "random_clusters", {"hexagonal", "random_discs", "random_clusters"},
            "how the layer is built: hexagonal discs, random discs or random rigid clusters"),
       real("particles.d_min", 0.7, gt(0), le(1), "smallest disc diameter [d]"),
       real("particles.d_max", 1.0, gt(0), le(1), "largest disc diameter [d]"),

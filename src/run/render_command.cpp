@@ -131,7 +131,7 @@ int render_command(const RenderCommandOptions& o) {
   const auto it = reader.metadata().numbers.find("h0");
   const double h0 = it != reader.metadata().numbers.end() ? it->second : 1.0;
   const auto split = reader.metadata().numbers.find("x_split");
-  const fs::path frames = o.dir / "frames";
+  const fs::path frames = o.dir / o.frames_name;
   fs::create_directories(frames);
   Frame view;
   fit_view(reader, view);
@@ -152,8 +152,10 @@ int render_command(const RenderCommandOptions& o) {
       std::cerr << "warning: ffmpeg not found; frames drawn, no animation made\n";
       return 0;
     }
-    assemble_animation(frames, "frame_%06d.png", o.dir / "animation.mp4", o.dir / "animation.gif", o.fps);
-    std::cout << "animation: " << (o.dir / "animation.mp4").string() << ", " << (o.dir / "animation.gif").string()
+    // animation.mp4 for the default frames, animation_<name>.mp4 for others.
+    const std::string stem = o.frames_name == "frames" ? "animation" : "animation_" + o.frames_name;
+    assemble_animation(frames, "frame_%06d.png", o.dir / (stem + ".mp4"), o.dir / (stem + ".gif"), o.fps);
+    std::cout << "animation: " << (o.dir / (stem + ".mp4")).string() << ", " << (o.dir / (stem + ".gif")).string()
               << "\n";
   }
   return 0;

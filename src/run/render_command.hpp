@@ -13,6 +13,7 @@ struct RenderCommandOptions {
   std::string color = "horizons";  // horizons | cluster | field:NAME
   int width_px = 1600;
   int every = 1;                   // draw every n-th output
+  std::string frames_name = "frames";  // subfolder of the frames; the animation is named after it
   int fps = 12;
   bool animation = true;
   bool vectors = false;            // arrows from the snapshot fields disp3_x, disp3_y
