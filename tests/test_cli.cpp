@@ -1,6 +1,8 @@
 // The `orogen` command line end to end: determinism across thread counts, resume after a
 // kill, refusal of bad input (exit 2, nothing written) and the printed default config.
 #include <gtest/gtest.h>
+
+#include "temp_dir_fixture.hpp"
 #include <signal.h>
 #include <spawn.h>
 #include <fcntl.h>
@@ -33,27 +35,17 @@ using namespace orogen;
 namespace {
 
 // A fresh directory per test, removed afterwards.
-class Cli : public ::testing::Test {
+class Cli : public orogen::testing::TempDirTest {
  protected:
   void SetUp() override {
     // Idle OpenMP threads sleep instead of spinning: on a loaded 2-core machine a spinning
     // team makes the 2-thread runs 10-100x slower. Results do not depend on it.
     ::setenv("OMP_WAIT_POLICY", "passive", 0);
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("orogen_cli_") + info->name() + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    TempDirTest::SetUp();
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using orogen::testing::slurp;
 
 void spit(const fs::path& p, const std::string& text) {
   std::ofstream out(p, std::ios::binary);

@@ -1,5 +1,7 @@
 // Output files: atomic writes, snapshots.h5, .vtp/.pvd, series.csv and checkpoint archives.
 #include <gtest/gtest.h>
+
+#include "temp_dir_fixture.hpp"
 #include <unistd.h>
 
 #include <array>
@@ -29,26 +31,8 @@ using namespace orogen;
 
 namespace {
 
-// A fresh directory per test, removed afterwards.
-class IoTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           (std::string("orogen_io_") + info->test_suite_name() + "_" + info->name() + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using IoTest = orogen::testing::TempDirTest;
+using orogen::testing::slurp;
 
 std::vector<fs::path> files_in(const fs::path& dir) {
   std::vector<fs::path> out;

@@ -41,6 +41,19 @@ struct NeighborList {
   bool valid = false;
 
   std::size_t size() const { return first.size(); }
+
+  // Calls f(name, vector&) for every array of the list (for checkpoints).
+  template <class F>
+  void for_each_array(F&& f) {
+    f("first", first); f("second", second); f("xi", xi); f("gamma_n", gamma_n);
+    f("id_first", id_first); f("id_second", id_second); f("chunk_start", chunk_start);
+    f("walls.wall", walls.wall); f("walls.disc", walls.disc); f("walls.xi", walls.xi);
+    f("walls.gamma_n", walls.gamma_n); f("walls.mass", walls.mass); f("walls.touching", walls.touching);
+    f("walls.at_limit", walls.at_limit); f("wall_disc_id", wall_disc_id);
+    f("x_ref", x_ref); f("y_ref", y_ref);
+    f("wall_ax_ref", wall_ax_ref); f("wall_ay_ref", wall_ay_ref);
+    f("wall_bx_ref", wall_bx_ref); f("wall_by_ref", wall_by_ref);
+  }
 };
 
 struct BuildStats {

@@ -3,17 +3,11 @@
 #include <cmath>
 #include <stdexcept>
 #include "util/parallel.hpp"
+#include "util/soa.hpp"
 
 namespace orogen {
 
-void Clusters::compact(std::span<const std::uint8_t> keep) {
-  for_each_array([&](std::string_view, auto& v) {
-    std::size_t w = 0;
-    for (std::size_t k = 0; k < v.size(); ++k)
-      if (keep[k]) v[w++] = v[k];
-    v.resize(w);
-  });
-}
+void Clusters::compact(std::span<const std::uint8_t> keep) { compact_arrays(*this, keep); }
 
 std::size_t make_cluster(Clusters& c, Discs& d, std::span<const std::size_t> idx, std::int64_t cluster_id) {
   if (idx.empty() || idx.size() > static_cast<std::size_t>(kMaxClusterSize))

@@ -2,6 +2,8 @@
 
 #include <numbers>
 
+#include "util/soa.hpp"
+
 namespace orogen {
 
 std::size_t Discs::add(std::int64_t disc_id, double px, double py, double r) {
@@ -25,13 +27,6 @@ void Discs::permute(std::span<const std::uint32_t> order) {
   });
 }
 
-void Discs::compact(std::span<const std::uint8_t> keep) {
-  for_each_array([&](std::string_view, auto& v) {
-    std::size_t w = 0;
-    for (std::size_t k = 0; k < v.size(); ++k)
-      if (keep[k]) v[w++] = v[k];
-    v.resize(w);
-  });
-}
+void Discs::compact(std::span<const std::uint8_t> keep) { compact_arrays(*this, keep); }
 
 }  // namespace orogen

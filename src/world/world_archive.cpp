@@ -7,12 +7,6 @@ namespace {
 
 std::string key(std::string_view prefix, std::string_view name) { return std::string(prefix) + "." + std::string(name); }
 
-template <class T>
-void put_u8(ArchiveWriter& out, std::string_view name, const std::vector<T>& v) {
-  std::vector<std::uint8_t> raw(v.begin(), v.end());
-  out.put(name, raw);
-}
-
 }  // namespace
 
 void save_world(ArchiveWriter& out, World& w) {
@@ -33,18 +27,7 @@ void save_world(ArchiveWriter& out, World& w) {
   out.put_string("walls.names", wall_names);
 
   auto& L = w.neighbors;
-  out.put("nl.first", L.first); out.put("nl.second", L.second); out.put("nl.xi", L.xi);
-  out.put("nl.gamma_n", L.gamma_n);
-  out.put("nl.id_first", L.id_first); out.put("nl.id_second", L.id_second);
-  out.put("nl.chunk_start", L.chunk_start);
-  out.put("nl.walls.wall", L.walls.wall); out.put("nl.walls.disc", L.walls.disc);
-  out.put("nl.walls.xi", L.walls.xi); out.put("nl.walls.gamma_n", L.walls.gamma_n);
-  out.put("nl.walls.mass", L.walls.mass);
-  out.put("nl.walls.touching", L.walls.touching); out.put("nl.walls.at_limit", L.walls.at_limit);
-  out.put("nl.wall_disc_id", L.wall_disc_id);
-  out.put("nl.x_ref", L.x_ref); out.put("nl.y_ref", L.y_ref);
-  out.put("nl.wall_ax_ref", L.wall_ax_ref); out.put("nl.wall_ay_ref", L.wall_ay_ref);
-  out.put("nl.wall_bx_ref", L.wall_bx_ref); out.put("nl.wall_by_ref", L.wall_by_ref);
+  L.for_each_array([&](std::string_view name, auto& v) { out.put(key("nl", name), v); });
   out.put_scalar("nl.builds", L.builds);
   out.put_scalar<std::uint8_t>("nl.valid", L.valid ? 1 : 0);
   out.put_scalar("nl.skin", L.skin);
@@ -98,18 +81,7 @@ void load_world(const ArchiveReader& in, World& w) {
   }
 
   auto& L = w.neighbors;
-  in.get("nl.first", L.first); in.get("nl.second", L.second); in.get("nl.xi", L.xi);
-  in.get("nl.gamma_n", L.gamma_n);
-  in.get("nl.id_first", L.id_first); in.get("nl.id_second", L.id_second);
-  in.get("nl.chunk_start", L.chunk_start);
-  in.get("nl.walls.wall", L.walls.wall); in.get("nl.walls.disc", L.walls.disc);
-  in.get("nl.walls.xi", L.walls.xi); in.get("nl.walls.gamma_n", L.walls.gamma_n);
-  in.get("nl.walls.mass", L.walls.mass);
-  in.get("nl.walls.touching", L.walls.touching); in.get("nl.walls.at_limit", L.walls.at_limit);
-  in.get("nl.wall_disc_id", L.wall_disc_id);
-  in.get("nl.x_ref", L.x_ref); in.get("nl.y_ref", L.y_ref);
-  in.get("nl.wall_ax_ref", L.wall_ax_ref); in.get("nl.wall_ay_ref", L.wall_ay_ref);
-  in.get("nl.wall_bx_ref", L.wall_bx_ref); in.get("nl.wall_by_ref", L.wall_by_ref);
+  L.for_each_array([&](std::string_view name, auto& v) { in.get(key("nl", name), v); });
   L.builds = in.get_scalar<std::uint64_t>("nl.builds");
   L.valid = in.get_scalar<std::uint8_t>("nl.valid") != 0;
   L.skin = in.get_scalar<double>("nl.skin");
