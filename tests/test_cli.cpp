@@ -394,3 +394,15 @@ TEST_F(Cli, DefaultRunNeedsNoConfig) {
 }
 
 }  // namespace
+
+TEST_F(Cli, UnstableRunStopsWithExit3AndNamesTheCause) {
+  // Contacts far too soft for the weight: the discs sink into each other.
+  const auto r = orogen_cli("run --out '" + (dir_ / "soft").string() +
+                                "' --set run.experiment=packing --set layer.length=20 --set layer.thickness=4"
+                                " --set contact.kn=3 --set output.progress=never",
+                            dir_);
+  EXPECT_EQ(r.status, 3);
+  const std::string log = slurp(dir_ / "soft" / "run.log");
+  EXPECT_NE(log.find("became unstable"), std::string::npos) << log;
+  EXPECT_NE(log.find("k_n = 3 is too soft for the load"), std::string::npos) << log;
+}

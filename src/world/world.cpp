@@ -12,6 +12,24 @@
 namespace orogen {
 namespace {
 
+// The most likely reason for a blow-up, from the time step, the stiffness and the weights.
+std::string likely_cause(const World& w) {
+  if (w.dt > w.stable_dt())
+    return fmt::format("time step dt = {:.3g} above the stability limit {:.3g} for k_n = {:.3g}", w.dt,
+                       w.stable_dt(), w.law.kn);
+  // Overlap under the weight of one disc, relative to its radius: a few percent at most.
+  double m = 0, r = 0;
+  for (std::size_t i = 0; i < w.discs.size(); ++i) { m += w.discs.mass[i]; r += w.discs.radius[i]; }
+  const double sag = w.discs.size() ? (m / r) * std::hypot(w.body.gx, w.body.gy) / w.law.kn : 0.0;
+  if (sag > 0.02)
+    return fmt::format("k_n = {:.3g} is too soft for the load: one disc's own weight overlaps it by {:.1f}% of its "
+                       "radius, a pile of them far more (raise contact.kn)",
+                       w.law.kn, 100 * sag);
+  return fmt::format("an imposed velocity (moving wall, plate, kinematic discs) too fast for k_n = {:.3g} at "
+                     "dt = {:.3g}, or a collision too violent for them",
+                     w.law.kn, w.dt);
+}
+
 void check_build(const BuildStats& s, const World& w) {
   if (!s.finite)
     throw InstabilityError(fmt::format(
@@ -22,10 +40,8 @@ void check_build(const BuildStats& s, const World& w) {
   if (s.max_overlap_ratio > 0.5)
     throw InstabilityError(fmt::format(
         "simulation became unstable at step {} (t = {:.6g}): discs {} and {} overlap by {:.0f}% of the smaller "
-        "radius. Likely cause: time step dt = {:.3g} too large for k_n = {:.3g} (stable limit {:.3g}), k_n too "
-        "soft for the load, or an imposed velocity too fast for the contact stiffness",
-        w.step, w.time, w.discs.id[s.worst_a], w.discs.id[s.worst_b], 100 * s.max_overlap_ratio, w.dt,
-        w.law.kn, w.stable_dt()));
+        "radius. Likely cause: {}",
+        w.step, w.time, w.discs.id[s.worst_a], w.discs.id[s.worst_b], 100 * s.max_overlap_ratio, likely_cause(w)));
 }
 
 }  // namespace
