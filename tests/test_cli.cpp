@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "temp_dir_fixture.hpp"
+#include "util/parallel.hpp"
 #include <signal.h>
 #include <spawn.h>
 #include <fcntl.h>
@@ -81,10 +82,10 @@ Result orogen_cli(const std::string& args, const fs::path& scratch) {
 }
 
 // Small settling runs (tenths of a second). Thread counts only matter above
-// kMinParallelItems (4096) discs or pairs, so the determinism runs use ~4000-4900 discs and
+// kMinParallelItems (16384) discs, so the determinism runs use ~17000-18000 discs and
 // stop after 600 steps (every rest check passes at once with a huge threshold).
 std::string big_short(const std::string& packing) {
-  return "--set run.experiment=packing --set particles.packing=" + packing + " --set layer.length=" + (packing == "hexagonal" ? "170" : "160") +
+  return "--set run.experiment=packing --set particles.packing=" + packing + " --set layer.length=" + (packing == "hexagonal" ? "700" : "620") +
          " --set layer.thickness=20 --set settle.relax_time=0 --set settle.ke_threshold=1e9"
          " --set output.interval=0.25 --set output.checkpoint_every=2 --set output.progress=never --set output.vtp=false";
 }
@@ -207,7 +208,7 @@ TEST_F(Cli, SameSeedSameOutputsForOneAndTwoThreads) {
     EXPECT_GE(outputs_in(one), 4);
     expect_same_run(one, two);
     // Above the parallel threshold, so the 2-thread run took its parallel paths.
-    EXPECT_GT(SnapshotReader(one / "snapshots.h5").read(0).size(), 4096u);
+    EXPECT_GT(SnapshotReader(one / "snapshots.h5").read(0).size(), static_cast<std::size_t>(kMinParallelItems));
   }
 }
 
