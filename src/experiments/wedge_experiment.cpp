@@ -137,9 +137,12 @@ void WedgeExperiment::update_windows(World& w) {
 // Constant-velocity condition: discs touching the retro-side base are held at rest (no slip).
 void WedgeExperiment::pin_retro_base(World& w) {
   const auto& wc = w.neighbors.walls;
+  const auto& ids = w.neighbors.wall_disc_id;
   if (pinned_.size() < static_cast<std::size_t>(w.next_disc_id)) pinned_.resize(static_cast<std::size_t>(w.next_disc_id), 0);
+  // By the stable id recorded with the contact: erosion or stray removal in this step may have
+  // compacted the disc arrays since the list was built.
   for (std::size_t k = 0; k < wc.size(); ++k)
-    if (wc.wall[k] == kRetroBase && wc.touching[k]) pinned_[static_cast<std::size_t>(w.discs.id[wc.disc[k]])] = 1;
+    if (wc.wall[k] == kRetroBase && wc.touching[k]) pinned_[static_cast<std::size_t>(ids[k])] = 1;
 }
 
 // Erosion (thesis 6.3): every disc, or whole cluster by its mean elevation, above the
@@ -155,8 +158,8 @@ void WedgeExperiment::erode(World& w) {
     any |= flags[i] != 0;
   }
   for (std::size_t k = 0; k < w.clusters.size(); ++k) {
-    if (w.clusters.y[k] <= limit) continue;
-    // Mean elevation of the member discs (the centre of mass weighs big discs more).
+    // Mean elevation of the member discs, not the centre of mass (which weighs big discs more
+    // and can lie on the other side of the threshold).
     double sum = 0;
     int n = 0;
     for (auto i : w.clusters.members[k]) if (i >= 0) { sum += d.y[static_cast<std::size_t>(i)]; ++n; }
@@ -258,18 +261,18 @@ std::vector<std::pair<std::string, std::vector<double>>> WedgeExperiment::fields
   };
   // Largest displacement since the previous output relative to any touching disc.
   const auto& L = w.neighbors;
-  if (L.x_ref.size() == d.size()) {
-    for (std::size_t p = 0; p < L.size(); ++p) {
-      const auto i = L.first[p], j = L.second[p];
-      const double gap = std::hypot(d.x[j] - d.x[i], d.y[j] - d.y[i]) - d.radius[i] - d.radius[j];
-      if (gap > 0) continue;
-      const double ux = (d.x[j] - prev(prev_x_[0], j)) - (d.x[i] - prev(prev_x_[0], i));
-      const double uy = (d.y[j] - prev(prev_y_[0], j)) - (d.y[i] - prev(prev_y_[0], i));
-      const double u = std::hypot(ux, uy);
-      if (!std::isfinite(u)) continue;
-      rel[i] = std::max(rel[i], u);
-      rel[j] = std::max(rel[j], u);
-    }
+  for (std::size_t p = 0; p < L.size(); ++p) {
+    const auto i = L.first[p], j = L.second[p];
+    // Skip pairs made stale by removals since the list was built.
+    if (i >= d.size() || j >= d.size() || d.id[i] != L.id_first[p] || d.id[j] != L.id_second[p]) continue;
+    const double gap = std::hypot(d.x[j] - d.x[i], d.y[j] - d.y[i]) - d.radius[i] - d.radius[j];
+    if (gap > 0) continue;
+    const double ux = (d.x[j] - prev(prev_x_[0], j)) - (d.x[i] - prev(prev_x_[0], i));
+    const double uy = (d.y[j] - prev(prev_y_[0], j)) - (d.y[i] - prev(prev_y_[0], i));
+    const double u = std::hypot(ux, uy);
+    if (!std::isfinite(u)) continue;
+    rel[i] = std::max(rel[i], u);
+    rel[j] = std::max(rel[j], u);
   }
   for (std::size_t i = 0; i < d.size(); ++i) {
     dx3[i] = d.x[i] - prev(prev_x_[2], i);

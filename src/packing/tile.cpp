@@ -77,6 +77,7 @@ std::pair<std::size_t, std::size_t> stamp_tile(World& w, const Tile& t, double x
   for (std::size_t k = 0; k < t.size(); ++k) {
     const auto i = w.add_disc(x_left + t.x[k], t.y[k], t.radius[k]);
     w.discs.depth0[i] = t.depth0[k];
+    w.discs.theta[i] = t.theta[k];  // free discs keep their orientation; clusters start at 0
     if (t.group[k] >= 0) members[t.group[k]].push_back(i);
   }
   for (auto& [group, idx] : members) w.add_cluster(idx);
