@@ -89,6 +89,10 @@ const std::vector<KeySpec>& schema() {
            "settled when the mean kinetic energy per disc is below this [m g d]"),
       real("settle.max_time", 3000.0, gt(0), none,
            "give up settling after this model time [sqrt(d/g)]"),
+      real("settle.mu", 0.0, ge(0), none,
+           "contact friction while the packing falls and settles (contact.mu applies from the relax "
+           "phase on): frictionless settling gives a dense packing, which dilates and faults under "
+           "shortening instead of compacting [-]"),
       real("settle.relax_time", 20.0, ge(0), none,
            "undamped time after the drag phase [sqrt(d/g)]"),
 
@@ -96,7 +100,8 @@ const std::vector<KeySpec>& schema() {
            "basal condition: traction (thesis 4.4) or constant velocity (thesis 4.3)"),
       real("wedge.speed", 0.025, gt(0), none, "convergence speed v of the pro-side plate [sqrt(g d)]"),
       real("wedge.mu_bp", 0.2, ge(0), none, "pro-side basal friction coefficient mu_bp [-]"),
-      real("wedge.mu_br", 0.2, ge(0), none, "retro-side basal friction coefficient mu_br [-]"),
+      real("wedge.mu_br", 0.4, ge(0), none,
+           "retro-side basal friction coefficient mu_br; 2 mu_bp, the lowest ratio of Experiment 3 [-]"),
       real("wedge.gamma_b", 10000.0, gt(0), none,
            "traction drag coefficient gamma_b of the pro-side plate (eq. 4.1), applied implicitly "
            "over a step so that any value is stable [m sqrt(g/d)]"),

@@ -19,6 +19,7 @@ constexpr double kUnitMass = std::numbers::pi / 4.0;
 void PackingExperiment::setup(World& w) {
   place_packing(w, packing_);
   w.body.drag = settle_.drag;
+  mu_ = w.law.mu;
   phase_ = Falling;
   phase_start_time_ = 0;
 }
@@ -30,6 +31,7 @@ double PackingExperiment::mean_kinetic_energy(const World& w) const {
 
 bool PackingExperiment::advance(World& w) {
   if (phase_ == Done) return false;
+  w.law.mu = phase_ < Relaxing ? settle_.mu : mu_;
   w.advance();
   if (w.step % check_every_ != 0) return true;
   if (w.time > settle_.max_time)
@@ -56,6 +58,7 @@ bool PackingExperiment::advance(World& w) {
       if (at_rest && w.time - phase_start_time_ >= settle_.relax_time) {
         record_initial_state(w, 0.0, packing_.length, settle_.column_width_factor * mean_radius(w.discs));
         phase_ = Done;
+        w.law.mu = mu_;
         return false;
       }
       break;
@@ -93,11 +96,13 @@ std::vector<double> PackingExperiment::measure(const World& w) const {
 void PackingExperiment::save(ArchiveWriter& out) const {
   out.put_scalar("packing.phase", phase_);
   out.put_scalar("packing.phase_start_time", phase_start_time_);
+  out.put_scalar("packing.mu", mu_);
 }
 
 void PackingExperiment::load(const ArchiveReader& in) {
   phase_ = in.get_scalar<int>("packing.phase");
   phase_start_time_ = in.get_scalar<double>("packing.phase_start_time");
+  mu_ = in.get_scalar<double>("packing.mu");
 }
 
 void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {

@@ -12,6 +12,7 @@ struct SettleSpec {
   double ke_threshold = 1e-6;    // mean kinetic energy per disc at rest (m g d)
   double max_time = 3000;        // give up after this model time
   double relax_time = 20;        // undamped time at the end
+  double mu = 0.0;               // contact friction while falling and settling
   double column_width_factor = 2.3;
 };
 
@@ -40,6 +41,7 @@ class PackingExperiment final : public Experiment {
   PackingSpec packing_;
   SettleSpec settle_;
   int phase_ = Falling;
+  double mu_ = 0.3;  // the material's friction (contact.mu), restored for the relax phase
   double phase_start_time_ = 0;
   std::uint64_t check_every_ = 200;  // steps between rest checks
 };

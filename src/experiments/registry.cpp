@@ -51,6 +51,7 @@ SettleSpec settle_spec(const Config& c) {
   s.ke_threshold = c.get_float("settle.ke_threshold");
   s.max_time = c.get_float("settle.max_time");
   s.relax_time = c.get_float("settle.relax_time");
+  s.mu = c.get_float("settle.mu");
   s.column_width_factor = c.get_float("layer.column_width_factor");
   return s;
 }

@@ -13,7 +13,6 @@ namespace orogen {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kTileGap = 0.02;   // between stamped tiles, so that they never overlap
 constexpr int kHousekeepingEvery = 100;  // steps between window, pinning and stray checks
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
@@ -28,7 +27,12 @@ void set_motion(World& w, std::size_t i, Motion m, double vx) {
 
 void WedgeExperiment::setup(World& w) {
   if (!spec_.packing_file.empty()) {
-    tile_ = load_tile(spec_.packing_file);
+    const Tile whole = load_tile(spec_.packing_file);
+    const double length = whole.length - 2 * tile_margin();
+    if (length < spec_.h0)
+      throw std::runtime_error(spec_.packing_file + " is too short for a tile: it needs a length of at least h0 + " +
+                               std::to_string(2 * tile_margin()));
+    tile_ = cut_tile(whole, tile_margin(), length);
   } else {
     // Settle the tile in a world of its own with the same engine settings.
     World box;
@@ -37,13 +41,14 @@ void WedgeExperiment::setup(World& w) {
     box.neighbors.skin = w.neighbors.skin;
     box.sort_every = w.sort_every;
     PackingSpec p = spec_.packing;
-    p.length = spec_.tile_length * spec_.h0;
+    // A wider box, cut back to the tile length away from its walls (see cut_tile).
+    p.length = spec_.tile_length * spec_.h0 + 2 * tile_margin();
     p.thickness = spec_.h0;
     PackingExperiment packing(p, spec_.settle);
     packing.setup(box);
     while (packing.advance(box)) {
     }
-    tile_ = tile_from_world(box, p.length, p.thickness);
+    tile_ = cut_tile(tile_from_world(box, p.length, p.thickness), tile_margin(), spec_.tile_length * spec_.h0);
   }
   build_layer(w);
 }
@@ -61,12 +66,14 @@ void WedgeExperiment::build_layer(World& w) {
   // Until a wedge exists, the layer in front of the S-point stalls on its base and must be
   // long enough to break at the S-point rather than against the rigid kinematic slab.
   window_pro_ = -std::max(spec_.window, spec_.initial_active) * spec_.h0;
-  window_retro_ = spec_.window * spec_.h0;
+  // The retro-side layer stays dynamic up to its end wall: held at rest, it would be a rigid
+  // backstop a few h0 behind the S-point, where the thesis's retro layer slides on its base.
+  window_retro_ = x_end_ + 1.0;
   double left = x_end_ - L;
   while (true) {
     stamp_tile(w, tile_, left);
     if (left < window_pro_ - L) break;
-    left -= L + kTileGap;
+    left -= L;
   }
   slab_left_ = left;
   entered_ = static_cast<std::int64_t>(w.discs.size());
@@ -79,7 +86,7 @@ void WedgeExperiment::build_layer(World& w) {
 void WedgeExperiment::feed_slab(World& w) {
   slab_left_ += spec_.v * w.dt;
   if (slab_left_ <= window_pro_ - tile_.length) return;
-  slab_left_ -= tile_.length + kTileGap;
+  slab_left_ -= tile_.length;
   const std::size_t first_cluster = w.clusters.size();
   const auto [first, last] = stamp_tile(w, tile_, slab_left_);
   for (auto i = first; i < last; ++i) set_motion(w, i, Motion::Kinematic, spec_.v);
@@ -95,11 +102,10 @@ void WedgeExperiment::feed_slab(World& w) {
 void WedgeExperiment::update_windows(World& w) {
   auto& d = w.discs;
   const double front_y = spec_.h0 + spec_.packing.d_max;
-  double dp = 0, dr = 0;
+  double dp = 0;
   for (std::size_t i = 0; i < d.size(); ++i)
-    if (d.y[i] > front_y) { dp = std::min(dp, d.x[i]); dr = std::max(dr, d.x[i]); }
+    if (d.y[i] > front_y) dp = std::min(dp, d.x[i]);
   window_pro_ = std::min(window_pro_, dp - spec_.window * spec_.h0);
-  window_retro_ = std::min(x_end_ + 1.0, std::max(window_retro_, dr + spec_.window * spec_.h0));
   if (pinned_.size() < static_cast<std::size_t>(w.next_disc_id)) pinned_.resize(static_cast<std::size_t>(w.next_disc_id), 0);
   auto wanted = [&](double x, bool pinned, double& vx) {
     vx = 0;

@@ -20,7 +20,7 @@ struct WedgeSpec {
   BasalCondition basal = BasalCondition::Traction;
   double h0 = 10;              // layer thickness (d)
   double v = 0.025;            // convergence speed of the pro-side plate (d per sqrt(d/g))
-  double mu_bp = 0.2, mu_br = 0.2;  // basal friction, pro and retro side
+  double mu_bp = 0.2, mu_br = 0.4;  // basal friction, pro and retro side
   double gamma_b = 1e4;        // traction drag coefficient (m g / sqrt(g d))
   double s_end = 8;            // run until this normalised convergence S
   int outputs = 100;           // output steps over the run
@@ -70,13 +70,15 @@ class WedgeExperiment final : public Experiment {
   void erode(World& world);
   void remove_strays(World& world);
   Surface surface(const World& world) const;
+  // Margin cut off each side of the settled box, where its walls loosened the packing.
+  double tile_margin() const { return 0.5 * spec_.h0 + 2.0; }
 
   WedgeSpec spec_;
   Tile tile_;
   double t_start_ = 0;
   double slab_left_ = 0;     // left edge of the leftmost stamped tile (moves with the plate)
   double window_pro_ = 0;    // discs left of this are kinematic, moving with the plate
-  double window_retro_ = 0;  // discs right of this are kinematic at rest
+  double window_retro_ = 0;  // discs right of this are kinematic at rest (the end wall: none)
   double x_end_ = 0;         // right end wall of the retro-side layer
   std::int64_t entered_ = 0; // discs ever added to the model
   std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base

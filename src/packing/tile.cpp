@@ -1,6 +1,7 @@
 #include "packing/tile.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -71,10 +72,71 @@ Tile load_tile(const std::filesystem::path& file) {
   return t;
 }
 
+Tile cut_tile(const Tile& whole, double x_lo, double length) {
+  // Mean x of each group's discs decides whether the group is in.
+  std::map<std::int32_t, std::pair<double, int>> group_x;
+  for (std::size_t k = 0; k < whole.size(); ++k)
+    if (whole.group[k] >= 0) { auto& g = group_x[whole.group[k]]; g.first += whole.x[k]; ++g.second; }
+  Tile t;
+  t.length = length;
+  t.thickness = whole.thickness;
+  std::map<std::int32_t, std::int32_t> renumber;
+  for (std::size_t k = 0; k < whole.size(); ++k) {
+    double x = whole.x[k];
+    if (whole.group[k] >= 0) { const auto& g = group_x[whole.group[k]]; x = g.first / g.second; }
+    if (x < x_lo || x >= x_lo + length) continue;
+    t.x.push_back(whole.x[k] - x_lo);
+    t.y.push_back(whole.y[k]);
+    t.radius.push_back(whole.radius[k]);
+    t.theta.push_back(whole.theta[k]);
+    t.depth0.push_back(whole.depth0[k]);
+    std::int32_t g = -1;
+    if (whole.group[k] >= 0) g = renumber.try_emplace(whole.group[k], static_cast<std::int32_t>(renumber.size())).first->second;
+    t.group.push_back(g);
+  }
+  return t;
+}
+
+namespace {
+
+// Tile discs (by index) that would overlap a disc already in the world near the seams at
+// x_left and x_left + length; their whole groups are dropped.
+std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_left) {
+  constexpr double kBand = 1.5;  // discs farther than this from a seam cannot touch across it
+  std::vector<std::size_t> near;
+  for (std::size_t i = 0; i < w.discs.size(); ++i) {
+    const double x = w.discs.x[i];
+    if (std::fabs(x - x_left) < kBand || std::fabs(x - x_left - t.length) < kBand) near.push_back(i);
+  }
+  std::vector<std::uint8_t> drop(t.size(), 0);
+  std::vector<std::uint8_t> drop_group;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (t.x[k] > kBand && t.x[k] < t.length - kBand) continue;
+    const double x = x_left + t.x[k];
+    for (auto i : near) {
+      const double dx = w.discs.x[i] - x, dy = w.discs.y[i] - t.y[k], r = w.discs.radius[i] + t.radius[k];
+      if (dx * dx + dy * dy >= r * r) continue;
+      drop[k] = 1;
+      if (t.group[k] >= 0) {
+        if (drop_group.size() <= static_cast<std::size_t>(t.group[k])) drop_group.resize(t.group[k] + 1, 0);
+        drop_group[static_cast<std::size_t>(t.group[k])] = 1;
+      }
+      break;
+    }
+  }
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t.group[k] >= 0 && static_cast<std::size_t>(t.group[k]) < drop_group.size() && drop_group[t.group[k]]) drop[k] = 1;
+  return drop;
+}
+
+}  // namespace
+
 std::pair<std::size_t, std::size_t> stamp_tile(World& w, const Tile& t, double x_left) {
+  const auto drop = seam_overlaps(w, t, x_left);
   const std::size_t first = w.discs.size();
   std::map<std::int32_t, std::vector<std::size_t>> members;
   for (std::size_t k = 0; k < t.size(); ++k) {
+    if (drop[k]) continue;
     const auto i = w.add_disc(x_left + t.x[k], t.y[k], t.radius[k]);
     w.discs.depth0[i] = t.depth0[k];
     w.discs.theta[i] = t.theta[k];  // free discs keep their orientation; clusters start at 0

@@ -25,9 +25,17 @@ Tile tile_from_world(const World& world, double length, double thickness);
 // Reads packing.h5 (written by a packing run) as a tile.
 Tile load_tile(const std::filesystem::path& packing_file);
 
+// The part of a tile between x_lo and x_lo + length (free discs by centre, clusters by the
+// mean of their discs), shifted to start at 0. Cutting a tile out of the interior of a wider
+// packing avoids the loose layer that a smooth side wall leaves at each edge, which would make
+// every seam between stamped copies a weak zone.
+Tile cut_tile(const Tile& whole, double x_lo, double length);
+
 // Stamps a copy of the tile with its lower-left corner at (x, 0): new discs and clusters with
-// fresh ids, at rest, with x0/y0 at their new positions and depth0 from the tile. Returns the
-// index range [first, last) of the new discs.
+// fresh ids, at rest, with x0/y0 at their new positions and depth0 from the tile. Copies sit
+// exactly one tile length apart; where a new disc would overlap an existing one across a seam,
+// its particle (whole cluster) is left out. Returns the index range [first, last) of the new
+// discs.
 std::pair<std::size_t, std::size_t> stamp_tile(World& world, const Tile& tile, double x);
 
 void save_tile(ArchiveWriter& out, const Tile& tile);
