@@ -159,7 +159,7 @@ TEST(Config, OverridesBeatTheFileAndLaterOverridesWin) {
 TEST(Config, UnknownKeySuggestsClosest) {
   const std::string msg = error_of(std::nullopt, {"settle.ke_treshold=1e-5"});
   EXPECT_NE(msg.find("did you mean 'settle.ke_threshold'?"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("keys in [settle]: drag, ke_threshold, max_time, relax_time"),
+  EXPECT_NE(msg.find("keys in [settle]: drag, ke_threshold, max_time, mu, relax_time"),
             std::string::npos)
       << msg;
   const std::string far = error_of(std::nullopt, {"contact.zzzzzzzzzz=1"});

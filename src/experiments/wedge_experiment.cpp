@@ -72,7 +72,7 @@ void WedgeExperiment::build_layer(World& w) {
   double left = x_end_ - L;
   while (true) {
     stamp_tile(w, tile_, left);
-    if (left < window_pro_ - L) break;
+    if (left <= window_pro_ - L) break;  // the next tile is stamped as soon as this one moves
     left -= L;
   }
   slab_left_ = left;
