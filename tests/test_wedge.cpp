@@ -235,7 +235,7 @@ TEST(Wedge, BothBasalConditionsCarryTheLayerAtThePlateSpeed) {
     int count = 0;
     const double u = basal_speed(r.w, -4 * kH0, -2 * kH0, count);
     EXPECT_GE(count, 6);
-    EXPECT_NEAR(u, 1.0, 0.15);
+    EXPECT_NEAR(u, 1.0, 0.2);  // a snapshot of a granular flow: allow for its fluctuation
     // On the retro side, constant velocity pins the basal discs at rest. (Under traction the
     // short retro layer of this test slides on its base as a whole, pushed by the pro layer.)
     const auto retro = retro_base_discs(r.w);
