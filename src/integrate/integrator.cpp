@@ -1,5 +1,7 @@
 #include "integrate/integrator.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -24,41 +26,75 @@ void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* f) {
   }
 }
 
+namespace {
+
+struct FreeDiscStep {
+  double max2 = 0;              // largest squared displacement from the reference
+  std::int64_t not_finite = 0;  // NaN displacements, counted apart so that the max stays a max
+};
+
+// Free discs [begin, end): semi-implicit Euler without branches, so that it vectorises (the
+// pointers are restrict parameters here: captured into an OpenMP region they lose it). Cluster
+// discs are updated too, for nothing: update_cluster_discs overwrites them from their bodies.
+FreeDiscStep step_free_discs(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx,
+                             double* __restrict vy, double* __restrict omega, double* __restrict x,
+                             double* __restrict y, double* __restrict theta, const DiscForce* __restrict force,
+                             const double* __restrict inv_m, const double* __restrict inv_i,
+                             const std::uint8_t* __restrict motion, const std::int32_t* __restrict cluster,
+                             const double* __restrict x_ref, const double* __restrict y_ref, double damp, double gx,
+                             double gy, double dt) {
+  double max2 = 0;
+  std::int64_t not_finite = 0;
+  // In blocks: the update loop vectorises only without a floating-point max reduction in it
+  // (GCC will not reorder a max over doubles), so the displacements go to a small buffer and
+  // their max is taken in a second, scalar loop.
+  constexpr std::ptrdiff_t kBlock = 256;
+  double m2[kBlock];
+  for (std::ptrdiff_t b0 = begin; b0 < end; b0 += kBlock) {
+    const std::ptrdiff_t b1 = std::min(end, b0 + kBlock);
+    for (std::ptrdiff_t i = b0; i < b1; ++i) {
+      const bool dynamic = motion[i] == static_cast<std::uint8_t>(Motion::Dynamic);
+      const double vx_new = damp * vx[i] + (force[i].fx * inv_m[i] + gx) * dt;
+      const double vy_new = damp * vy[i] + (force[i].fy * inv_m[i] + gy) * dt;
+      const double w_new = damp * omega[i] + force[i].torque * inv_i[i] * dt;
+      vx[i] = dynamic ? vx_new : vx[i];
+      vy[i] = dynamic ? vy_new : vy[i];
+      omega[i] = dynamic ? w_new : omega[i];
+      x[i] += vx[i] * dt;
+      y[i] += vy[i] * dt;
+      theta[i] += omega[i] * dt;
+      const double dx = x[i] - x_ref[i], dy = y[i] - y_ref[i];
+      m2[i - b0] = cluster[i] < 0 ? dx * dx + dy * dy : 0.0;  // member discs: measured later
+    }
+    for (std::ptrdiff_t k = 0; k < b1 - b0; ++k) {
+      max2 = std::max(max2, m2[k]);
+      not_finite += m2[k] != m2[k];
+    }
+  }
+  return {max2, not_finite};
+}
+
+}  // namespace
+
 double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt, const double* x_ref,
                  const double* y_ref) {
   const auto n = static_cast<std::ptrdiff_t>(d.size());
   const double damp = 1.0 - g.drag * dt;
-  // Written without branches so that it vectorises. Cluster discs are updated here too, for
-  // nothing: update_cluster_discs overwrites them from their bodies below.
-  double* __restrict vx = d.vx.data();
-  double* __restrict vy = d.vy.data();
-  double* __restrict omega = d.omega.data();
-  double* __restrict x = d.x.data();
-  double* __restrict y = d.y.data();
-  double* __restrict theta = d.theta.data();
-  const double* __restrict inv_m = d.inv_mass.data();
-  const double* __restrict inv_i = d.inv_inertia.data();
-  const std::uint8_t* __restrict motion = d.motion.data();
-  const std::int32_t* __restrict cluster = d.cluster.data();
   double max2 = 0;
-#pragma omp parallel for simd schedule(static) reduction(max : max2) if (n > kMinParallelItems)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const bool dynamic = motion[i] == static_cast<std::uint8_t>(Motion::Dynamic);
-    const double vx_new = damp * vx[i] + (force[i].fx * inv_m[i] + g.gx) * dt;
-    const double vy_new = damp * vy[i] + (force[i].fy * inv_m[i] + g.gy) * dt;
-    const double w_new = damp * omega[i] + force[i].torque * inv_i[i] * dt;
-    vx[i] = dynamic ? vx_new : vx[i];
-    vy[i] = dynamic ? vy_new : vy[i];
-    omega[i] = dynamic ? w_new : omega[i];
-    x[i] += vx[i] * dt;
-    y[i] += vy[i] * dt;
-    theta[i] += omega[i] * dt;
-    const double dx = x[i] - x_ref[i], dy = y[i] - y_ref[i];
-    const double m2 = cluster[i] < 0 ? dx * dx + dy * dy : 0.0;  // member discs: measured below
-    // Written so that NaN counts as infinitely far: it forces a rebuild, where it is caught.
-    max2 = m2 <= max2 ? max2 : (m2 == m2 ? m2 : std::numeric_limits<double>::infinity());
+  std::int64_t not_finite = 0;
+#pragma omp parallel reduction(max : max2) reduction(+ : not_finite) if (n > kMinParallelItems)
+  {
+    // A static split of the discs over the threads (a max and a count do not depend on it).
+    const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
+    const std::ptrdiff_t begin = n * t / threads, end = n * (t + 1) / threads;
+    const FreeDiscStep r = step_free_discs(begin, end, d.vx.data(), d.vy.data(), d.omega.data(), d.x.data(),
+                                           d.y.data(), d.theta.data(), force, d.inv_mass.data(), d.inv_inertia.data(),
+                                           d.motion.data(), d.cluster.data(), x_ref, y_ref, damp, g.gx, g.gy, dt);
+    max2 = std::max(max2, r.max2);
+    not_finite += r.not_finite;
   }
-  const double moved = std::sqrt(max2);
+  // NaN counts as infinitely far: it forces a rebuild, where it is caught.
+  const double moved = not_finite ? std::numeric_limits<double>::infinity() : std::sqrt(max2);
   if (c.size() == 0) return moved;
   gather_cluster_forces(c, d, force);
   const auto nc = static_cast<std::ptrdiff_t>(c.size());
