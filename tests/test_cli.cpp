@@ -407,3 +407,32 @@ TEST_F(Cli, UnstableRunStopsWithExit3AndNamesTheCause) {
   EXPECT_NE(log.find("became unstable"), std::string::npos) << log;
   EXPECT_NE(log.find("k_n = 3 is too soft for the load"), std::string::npos) << log;
 }
+
+TEST_F(Cli, WedgeStartsFromAPackingFileAndRefusesAWrongOne) {
+  const std::string quiet = " --set output.progress=never --set output.vtp=false --threads 1";
+  const auto packing = orogen_cli("run --out '" + (dir_ / "layer").string() +
+                                      "' --set run.experiment=packing --set layer.length=40"
+                                      " --set layer.thickness=6" + quiet,
+                                  dir_);
+  ASSERT_EQ(packing.status, 0) << packing.err;
+  const std::string file = (dir_ / "layer" / "packing.h5").string();
+  const auto wedge = orogen_cli("run --out '" + (dir_ / "wedge").string() + "' --set layer.thickness=6"
+                                    " --set wedge.packing_file='" + file + "' --set wedge.s_end=0.02"
+                                    " --set wedge.outputs=2" + quiet,
+                                dir_);
+  ASSERT_EQ(wedge.status, 0) << wedge.err;
+  EXPECT_EQ(outputs_in(dir_ / "wedge"), 3);
+  // A packing of another thickness, and a file that is no packing: exit 2, nothing written.
+  const auto thick = orogen_cli("run --out '" + (dir_ / "bad1").string() + "' --set layer.thickness=8"
+                                    " --set wedge.packing_file='" + file + "'" + quiet,
+                                dir_);
+  EXPECT_EQ(thick.status, 2);
+  EXPECT_NE(thick.err.find("set layer.thickness = 6"), std::string::npos) << thick.err;
+  const auto junk = orogen_cli("run --out '" + (dir_ / "bad2").string() + "' --set wedge.packing_file='" +
+                                   (dir_ / "layer" / "config.toml").string() + "'" + quiet,
+                               dir_);
+  EXPECT_EQ(junk.status, 2);
+  EXPECT_NE(junk.err.find("wedge.packing_file"), std::string::npos) << junk.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad1"));
+  EXPECT_FALSE(fs::exists(dir_ / "bad2"));
+}

@@ -1,6 +1,7 @@
 // The registry of experiments: run.experiment names one; adding an experiment adds a line here.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 #include <numbers>
 
@@ -81,9 +82,28 @@ std::unique_ptr<Experiment> make_wedge(const Config& c) {
   w.packing_file = c.get_string("wedge.packing_file");
   w.packing = packing_spec(c);
   w.settle = settle_spec(c);
-  if (!w.packing_file.empty() && !std::filesystem::exists(w.packing_file))
-    throw config_error(c.source_of("wedge.packing_file"), "wedge.packing_file", w.packing_file,
-                       "an existing packing.h5 written by a packing run");
+  if (!w.packing_file.empty()) {
+    // Read it now, so that a wrong file is a configuration error before anything is written.
+    const double needed = w.h0 + 2 * WedgeExperiment::tile_margin_for(w.h0);
+    double length = 0, thickness = 0;
+    try {
+      const Tile tile = load_tile(w.packing_file);
+      length = tile.length;
+      thickness = tile.thickness;
+    } catch (const std::exception& e) {
+      throw config_error(c.source_of("wedge.packing_file"), "wedge.packing_file", w.packing_file,
+                         std::string("an existing packing.h5 written by a packing run (") + e.what() + ")");
+    }
+    if (std::fabs(thickness - w.h0) > 1e-9 * w.h0)
+      throw config_error(c.source_of("wedge.packing_file"), "wedge.packing_file", w.packing_file,
+                         fmt::format("a packing as thick as layer.thickness = {} (this one is {} thick: set "
+                                     "layer.thickness = {})",
+                                     w.h0, thickness, thickness));
+    if (length < needed)
+      throw config_error(c.source_of("wedge.packing_file"), "wedge.packing_file", w.packing_file,
+                         fmt::format("a packing at least {} d long for layer.thickness = {} (this one is {} d)",
+                                     needed, w.h0, length));
+  }
   check_convergence_step(c, w);
   return std::make_unique<WedgeExperiment>(std::move(w));
 }

@@ -71,7 +71,10 @@ class WedgeExperiment final : public Experiment {
   void remove_strays(World& world);
   Surface surface(const World& world) const;
   // Margin cut off each side of the settled box, where its walls loosened the packing.
-  double tile_margin() const { return 0.5 * spec_.h0 + 2.0; }
+  double tile_margin() const { return tile_margin_for(spec_.h0); }
+
+ public:
+  static double tile_margin_for(double h0) { return 0.5 * h0 + 2.0; }
 
   WedgeSpec spec_;
   Tile tile_;

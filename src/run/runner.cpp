@@ -263,6 +263,10 @@ int run_command(const RunOptions& opt) {
   } catch (const UsageError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
+  } catch (const std::exception& e) {
+    // Anything else (a file that cannot be written, say) ends the run with its reason.
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
   }
 }
 
