@@ -3,8 +3,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 #include "contact/contact_block.hpp"
 #include "util/parallel.hpp"

@@ -122,7 +122,6 @@ void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {
   frame.step = static_cast<std::int64_t>(w.step);
   frame.time = w.time;
   frame.discs = &w.discs;
-  std::vector<double> surface_x, surface_h;
   for (std::size_t k = 0; k < s.height.size(); ++k) frame.attrs[fmt::format("surface_{:05d}", k)] = s.height[k];
   frame.attrs["column_width"] = s.width;
   writer.append(frame);

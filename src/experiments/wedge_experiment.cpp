@@ -154,26 +154,7 @@ void WedgeExperiment::pin_retro_base(World& w) {
 // Erosion (thesis 6.3): every disc, or whole cluster by its mean elevation, above the
 // threshold is removed and logged.
 void WedgeExperiment::erode(World& w) {
-  const double limit = spec_.erosion_height * spec_.h0;
-  const auto& d = w.discs;
-  std::vector<std::uint8_t> flags(d.size(), 0);
-  bool any = false;
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    if (d.cluster[i] >= 0) continue;
-    flags[i] = d.y[i] > limit;
-    any |= flags[i] != 0;
-  }
-  for (std::size_t k = 0; k < w.clusters.size(); ++k) {
-    // Mean elevation of the member discs, not the centre of mass (which weighs big discs more
-    // and can lie on the other side of the threshold).
-    double sum = 0;
-    int n = 0;
-    for (auto i : w.clusters.members[k]) if (i >= 0) { sum += d.y[static_cast<std::size_t>(i)]; ++n; }
-    if (sum / n <= limit) continue;
-    for (auto i : w.clusters.members[k]) if (i >= 0) flags[static_cast<std::size_t>(i)] = 1;
-    any = true;
-  }
-  if (any) w.remove(flags, RemovalReason::Eroded);
+  w.remove_above(spec_.erosion_height * spec_.h0, RemovalReason::Eroded);
 }
 
 void WedgeExperiment::remove_strays(World& w) {

@@ -119,20 +119,7 @@ void place_packing(World& w, const PackingSpec& s) {
 }
 
 std::size_t trim_to_thickness(World& w, double thickness) {
-  const double cut = thickness - mean_radius(w.discs);
-  auto& d = w.discs;
-  std::vector<std::uint8_t> flags(d.size(), 0);
-  std::vector<double> cluster_y(w.clusters.size(), 0.0);
-  for (std::size_t k = 0; k < w.clusters.size(); ++k) {
-    int n = 0;
-    for (auto i : w.clusters.members[k]) if (i >= 0) { cluster_y[k] += d.y[i]; ++n; }
-    cluster_y[k] /= n;
-  }
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    const double y = d.cluster[i] >= 0 ? cluster_y[static_cast<std::size_t>(d.cluster[i])] : d.y[i];
-    flags[i] = y > cut;
-  }
-  return w.remove(flags, RemovalReason::Other);
+  return w.remove_above(thickness - mean_radius(w.discs), RemovalReason::Other);
 }
 
 void record_initial_state(World& w, double x_lo, double x_hi, double column_width) {

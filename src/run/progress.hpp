@@ -14,6 +14,8 @@ class Progress {
   // fraction < 0: unknown, no time-left estimate.
   void update(std::uint64_t step, double time, std::size_t particles, double fraction, const std::string& status);
   void finish();
+  // Whether a line is drawn at all (callers can skip composing its status otherwise).
+  bool enabled() const { return enabled_; }
   // Particle-steps per second since the start.
   double rate() const;
 

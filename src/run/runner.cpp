@@ -105,7 +105,7 @@ class Run {
                    world_.step, world_.time, world_.discs.size(), particle_steps / secs / 1e6, exp_->status(world_));
         if (checkpoint_every_ > 0 && state_.outputs % checkpoint_every_ == 0) checkpoint();
       }
-      if ((world_.step & 63) == 0)
+      if ((world_.step & 63) == 0 && progress.enabled())
         progress.update(world_.step, world_.time, world_.discs.size(), exp_->fraction_done(world_), exp_->status(world_));
     }
     progress.finish();

@@ -85,6 +85,22 @@ std::size_t World::remove(std::span<const std::uint8_t> flags, RemovalReason rea
   return removed;
 }
 
+std::size_t World::remove_above(double height, RemovalReason reason) {
+  std::vector<double> cluster_y(clusters.size(), 0.0);
+  for (std::size_t k = 0; k < clusters.size(); ++k) {
+    int n = 0;
+    for (auto i : clusters.members[k])
+      if (i >= 0) { cluster_y[k] += discs.y[static_cast<std::size_t>(i)]; ++n; }
+    cluster_y[k] /= n;
+  }
+  std::vector<std::uint8_t> flags(discs.size(), 0);
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    const double y = discs.cluster[i] >= 0 ? cluster_y[static_cast<std::size_t>(discs.cluster[i])] : discs.y[i];
+    flags[i] = y > height;
+  }
+  return remove(flags, reason);
+}
+
 std::size_t World::add_disc(double x, double y, double r) {
   neighbors.valid = false;
   return discs.add(next_disc_id++, x, y, r);

@@ -65,6 +65,11 @@ struct World {
   // whole cluster), logging each removal; history of the surviving contacts is kept.
   std::size_t remove(std::span<const std::uint8_t> flags, RemovalReason reason);
 
+  // Removes every free disc whose centre, and every cluster whose member discs' mean centre
+  // height, is above the given height (the mean, not the centre of mass, which weighs big discs
+  // more and can lie on the other side). Used for trimming a packing and for erosion.
+  std::size_t remove_above(double height, RemovalReason reason);
+
   // Adds a free disc and returns its index; the neighbour list is rebuilt on the next step.
   std::size_t add_disc(double x, double y, double r);
 
