@@ -22,6 +22,12 @@ struct SeriesColumn {
   std::string name, description;
 };
 
+// One result of a finished run (summary.csv; `orogen sweep` tabulates these across runs).
+struct SummaryValue {
+  std::string name, description;
+  double value;
+};
+
 class Experiment {
  public:
   virtual ~Experiment() = default;
@@ -47,6 +53,8 @@ class Experiment {
   virtual void load(const ArchiveReader& in) = 0;
   // Work after the last step (e.g. writing the packing file).
   virtual void finish(World&, const std::filesystem::path& /*out_dir*/) {}
+  // The run's results, written to summary.csv after finish() (none: no file).
+  virtual std::vector<SummaryValue> summary(const World&) const { return {}; }
   // Short status for the progress line, and the fraction done (negative if unknown).
   virtual std::string status(const World& world) const = 0;
   virtual double fraction_done(const World&) const { return -1.0; }

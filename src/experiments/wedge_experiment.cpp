@@ -12,7 +12,6 @@
 namespace orogen {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kHousekeepingEvery = 100;  // steps between window, pinning and stray checks
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
@@ -239,33 +238,7 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
 }
 
 std::vector<std::pair<std::string, std::vector<double>>> WedgeExperiment::fields(const World& w) const {
-  const auto& d = w.discs;
-  std::vector<double> rel(d.size(), 0.0), dx3(d.size(), kNaN), dy3(d.size(), kNaN);
-  // Position of disc i at an earlier output (NaN if it did not exist then).
-  auto prev = [&](const std::vector<double>& a, std::size_t i) {
-    const auto id = static_cast<std::size_t>(d.id[i]);
-    return id < a.size() ? a[id] : kNaN;
-  };
-  // Largest displacement since the previous output relative to any touching disc.
-  const auto& L = w.neighbors;
-  for (std::size_t p = 0; p < L.size(); ++p) {
-    const auto i = L.first[p], j = L.second[p];
-    // Skip pairs made stale by removals since the list was built.
-    if (i >= d.size() || j >= d.size() || d.id[i] != L.id_first[p] || d.id[j] != L.id_second[p]) continue;
-    const double gap = std::hypot(d.x[j] - d.x[i], d.y[j] - d.y[i]) - d.radius[i] - d.radius[j];
-    if (gap > 0) continue;
-    const double ux = (d.x[j] - prev(prev_x_[0], j)) - (d.x[i] - prev(prev_x_[0], i));
-    const double uy = (d.y[j] - prev(prev_y_[0], j)) - (d.y[i] - prev(prev_y_[0], i));
-    const double u = std::hypot(ux, uy);
-    if (!std::isfinite(u)) continue;
-    rel[i] = std::max(rel[i], u);
-    rel[j] = std::max(rel[j], u);
-  }
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    dx3[i] = d.x[i] - prev(prev_x_[2], i);
-    dy3[i] = d.y[i] - prev(prev_y_[2], i);
-  }
-  return {{"max_rel_disp", std::move(rel)}, {"disp3_x", std::move(dx3)}, {"disp3_y", std::move(dy3)}};
+  return displacements_.fields(w);
 }
 
 std::vector<std::pair<std::string, double>> WedgeExperiment::scalars(const World& w) const {
@@ -273,16 +246,7 @@ std::vector<std::pair<std::string, double>> WedgeExperiment::scalars(const World
           {"view_y_min", view_box(w)[2]}, {"view_y_max", view_box(w)[3]}};
 }
 
-void WedgeExperiment::after_output(const World& w) {
-  prev_x_[2] = std::move(prev_x_[1]); prev_y_[2] = std::move(prev_y_[1]);
-  prev_x_[1] = std::move(prev_x_[0]); prev_y_[1] = std::move(prev_y_[0]);
-  prev_x_[0].assign(static_cast<std::size_t>(w.next_disc_id), kNaN);
-  prev_y_[0].assign(static_cast<std::size_t>(w.next_disc_id), kNaN);
-  for (std::size_t i = 0; i < w.discs.size(); ++i) {
-    prev_x_[0][static_cast<std::size_t>(w.discs.id[i])] = w.discs.x[i];
-    prev_y_[0][static_cast<std::size_t>(w.discs.id[i])] = w.discs.y[i];
-  }
-}
+void WedgeExperiment::after_output(const World& w) { displacements_.remember(w); }
 
 void WedgeExperiment::save(ArchiveWriter& out) const {
   save_tile(out, tile_);
@@ -293,10 +257,7 @@ void WedgeExperiment::save(ArchiveWriter& out) const {
   out.put_scalar("wedge.x_end", x_end_);
   out.put_scalar("wedge.entered", entered_);
   out.put("wedge.pinned", pinned_);
-  for (int k = 0; k < 3; ++k) {
-    out.put(fmt::format("wedge.prev_x{}", k), prev_x_[k]);
-    out.put(fmt::format("wedge.prev_y{}", k), prev_y_[k]);
-  }
+  displacements_.save(out, "wedge");
 }
 
 void WedgeExperiment::load(const ArchiveReader& in) {
@@ -308,10 +269,7 @@ void WedgeExperiment::load(const ArchiveReader& in) {
   x_end_ = in.get_scalar<double>("wedge.x_end");
   entered_ = in.get_scalar<std::int64_t>("wedge.entered");
   in.get("wedge.pinned", pinned_);
-  for (int k = 0; k < 3; ++k) {
-    in.get(fmt::format("wedge.prev_x{}", k), prev_x_[k]);
-    in.get(fmt::format("wedge.prev_y{}", k), prev_y_[k]);
-  }
+  displacements_.load(in, "wedge");
 }
 
 std::string WedgeExperiment::status(const World& w) const {

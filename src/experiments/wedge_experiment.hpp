@@ -9,6 +9,7 @@
 
 #include "experiments/experiment.hpp"
 #include "experiments/packing_experiment.hpp"
+#include "analysis/displacement_tracker.hpp"
 #include "analysis/surface.hpp"
 #include "packing/tile.hpp"
 
@@ -85,8 +86,7 @@ class WedgeExperiment final : public Experiment {
   double x_end_ = 0;         // right end wall of the retro-side layer
   std::int64_t entered_ = 0; // discs ever added to the model
   std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base
-  // Positions at the last three outputs, by disc id (NaN where the disc did not exist).
-  std::vector<double> prev_x_[3], prev_y_[3];
+  DisplacementTracker displacements_;  // for the per-output displacement fields
 };
 
 }  // namespace orogen

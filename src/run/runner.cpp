@@ -111,6 +111,7 @@ class Run {
     progress.finish();
     if (state_.output_times.empty() || world_.step != last_output_step_) output();
     exp_->finish(world_, dir_);
+    write_summary();
     state_.finished = true;
     checkpoint();
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -168,6 +169,22 @@ class Run {
     if (write_vtp_) write_pvd_file();
     // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
     if (state_.outputs == abort_after_outputs_) std::_Exit(137);
+  }
+
+  // summary.csv: the series format with a single row, one column per result.
+  void write_summary() {
+    const auto values = exp_->summary(world_);
+    if (values.empty()) return;
+    std::vector<CsvSeries::Column> cols;
+    std::vector<double> row;
+    for (const auto& v : values) {
+      cols.push_back({v.name, v.description});
+      row.push_back(v.value);
+    }
+    CsvSeries summary(dir_ / "summary.csv", std::move(cols),
+                      {fmt::format("Orogen {} summary, experiment '{}': the results of the finished run", OROGEN_VERSION,
+                                   config_.get_string("run.experiment"))});
+    summary.add_row(std::move(row));
   }
 
   void write_pvd_file() {
