@@ -7,6 +7,7 @@
 #include "config/schema.hpp"
 #include "run/render_command.hpp"
 #include "run/runner.hpp"
+#include "run/sweep_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Orogen: a discrete element model of orogenesis (Naylor 2004)"};
@@ -45,6 +46,20 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--vector-stride", render.vector_stride, "draw every n-th disc's arrow")
       ->capture_default_str();
 
+  orogen::SweepOptions sweep;
+  std::string sweep_file, sweep_out;
+  auto* sweep_cmd = app.add_subcommand("sweep", "run every combination of a sweep file's matrix, several at once, "
+                                                "and tabulate the results (resumable)");
+  sweep_cmd->add_option("file", sweep_file, "sweep file (TOML, see docs/sweeps.md)")->required();
+  sweep_cmd->add_option("--out,-o", sweep_out, "sweep folder: runs/, logs/, results.csv, results.md")->required();
+  sweep_cmd->add_option("--jobs,-j", sweep.jobs, "runs at once (default: hardware threads / --threads)")
+      ->check(CLI::PositiveNumber);
+  sweep_cmd->add_option("--threads", sweep.threads, "threads of each run (more only helps from 16384 discs up)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sweep_cmd->add_flag("--render", sweep.render, "render each finished run (horizons and max_rel_disp)");
+  sweep_cmd->add_flag("--dry-run", sweep.dry_run, "check the sweep, list its runs and what each needs; run nothing");
+
   bool markdown = false;
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
   config_cmd->add_flag("--markdown", markdown, "print the key reference as Markdown tables instead");
@@ -63,6 +78,11 @@ int main(int argc, char** argv) {
     if (!resume_dir.empty()) { run.resume = true; run.out = resume_dir; }
     else run.out = out;
     return orogen::run_command(run);
+  }
+  if (*sweep_cmd) {
+    sweep.file = sweep_file;
+    sweep.out = sweep_out;
+    return orogen::sweep_command(sweep);
   }
   render.dir = render_dir;
   return orogen::render_command(render);

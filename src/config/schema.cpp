@@ -52,8 +52,9 @@ std::string_view KeySpec::key() const {
 
 const std::vector<KeySpec>& schema() {
   static const std::vector<KeySpec> table = {
-      text("run.experiment", "wedge", {"packing", "wedge"},
-           "what the run does: settle a packing, or grow a doubly-vergent wedge"),
+      text("run.experiment", "wedge", {"packing", "wedge", "repose", "singly_vergent", "biaxial"},
+           "what the run does: settle a packing, grow a doubly-vergent wedge, an angle of repose "
+           "experiment, a singly-vergent critical wedge, or a biaxial test of bulk friction"),
       integer("run.seed", 1, ge(0), "seed of the packing generator"),
       integer("run.threads", 0, ge(0), "OpenMP threads, 0 = all cores"),
 
@@ -119,6 +120,43 @@ const std::vector<KeySpec>& schema() {
       real("wedge.marker_height", 1.5, gt(0), none, "marker fronts are measured at this elevation [h0]"),
       text("wedge.packing_file", "", {},
            "settled tile from a packing run (its packing.h5); empty = settle one first"),
+
+      // [repose]: slump and ledge angle of repose experiments (thesis 3.2.1, 3.2.2)
+      text("repose.variant", "slump", {"slump", "ledge"},
+           "slump: lowermost particles fixed, the whole side wall removed (thesis 3.2.1); ledge: rough "
+           "base, the lower part of the wall kept with the particles touching it fixed (3.2.2)"),
+      real("repose.size", 40.0, gt(0), none, "side of the square block of settled material [d]"),
+      real("repose.fixed_height", 1.0, ge(0), none,
+           "slump: particles whose centre lies below this are fixed [d]"),
+      real("repose.ledge_fraction", 0.2, gt(0), le(1),
+           "ledge: height of the wall that stays, as a fraction of the block height [-]"),
+      real("repose.ke_threshold", 1e-5, gt(0), none,
+           "at rest when the mean kinetic energy per disc is below this [m g d]"),
+      real("repose.min_time", 20.0, ge(0), none, "no rest check before this time after opening [sqrt(d/g)]"),
+      real("repose.max_time", 3000.0, gt(0), none,
+           "end the run (recorded as not at rest) after this time [sqrt(d/g)]"),
+      // [singly]: singly-vergent critical wedge (thesis 3.2.3, Appendix A)
+      real("singly.speed", 0.025, gt(0), none, "backstop speed [sqrt(g d)]"),
+      real("singly.mu_b", 0.2, ge(0), none, "basal (Coulomb) friction coefficient mu_b [-]"),
+      real("singly.shortening", 5.0, gt(0), none, "run until the backstop has moved this far [h0]"),
+      integer("singly.outputs", 50, ge(1), "output steps over the run"),
+      real("singly.steady_from", 0.5, ge(0), le(1),
+           "the steady taper of the summary averages the outputs after this fraction of the run [-]"),
+      // [biaxial]: biaxial test of the bulk friction of a packing
+      real("biaxial.width", 30.0, ge(5), none, "width of the box the sample settles in [d]"),
+      real("biaxial.height", 60.0, ge(5), none, "height the settled sample is trimmed to [d]"),
+      real("biaxial.sigma3", 5.0, gt(0), none,
+           "confining stress held by the side walls; 5 is the lithostatic stress about 5 d deep, "
+           "mid-depth of a 10 d layer [m g / d^2, m the mass of a disc of diameter d]"),
+      real("biaxial.strain_rate", 2.5e-4, gt(0), none,
+           "axial strain rate of the top wall (constant speed, of the height when shearing "
+           "begins); slow enough to be quasi-static [1 / sqrt(d/g)]"),
+      real("biaxial.strain_end", 0.2, gt(0), le(0.5), "shear until this axial strain [-]"),
+      integer("biaxial.outputs", 100, ge(6), "output steps over the shearing"),
+      real("biaxial.servo_gain", 1.0, gt(0), le(2),
+           "stress-controlled walls move at gain x stress error x d / (k_n dt): the fraction of the error "
+           "removed per step against a rigid sample with one contact per d of wall; unstable "
+           "from about 2.5 [-]"),
 
       real("output.interval", 10.0, gt(0), none, "model time between output steps [sqrt(d/g)]"),
       integer("output.checkpoint_every", 10, ge(0),

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -125,6 +126,34 @@ void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {
   for (std::size_t k = 0; k < s.height.size(); ++k) frame.attrs[fmt::format("surface_{:05d}", k)] = s.height[k];
   frame.attrs["column_width"] = s.width;
   writer.append(frame);
+}
+
+std::vector<SummaryValue> PackingExperiment::summary(const World& w) const {
+  const auto stats = measure_contacts(w);
+  const Surface s = measure_surface(w.discs, 0.0, packing_.length,
+                                    settle_.column_width_factor * mean_radius(w.discs));
+  // Column heights of the settled top: their mean is the layer's thickness, their spread its roughness.
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (double h : s.height)
+    if (std::isfinite(h)) { sum += h; sum2 += h * h; ++n; }
+  const double mean = n ? sum / n : 0.0;
+  const double spread = n ? std::sqrt(std::max(0.0, sum2 / n - mean * mean)) : 0.0;
+  // Cluster members touch without overlapping, so the disc areas add up to the solid area.
+  double solid = 0;
+  for (double r : w.discs.radius) solid += std::numbers::pi * r * r;
+  const double bulk = packing_.length * mean;
+  const double fraction = bulk > 0 ? solid / bulk : 0.0;
+  return {{"time", "model time when the layer came to rest [sqrt(d/g)]", w.time},
+          {"steps", "time steps taken", static_cast<double>(w.step)},
+          {"n_discs", "number of discs", static_cast<double>(w.discs.size())},
+          {"n_clusters", "number of rigid clusters", static_cast<double>(w.clusters.size())},
+          {"thickness", "mean height of the upper surface: the settled layer's thickness [d]", mean},
+          {"roughness", "standard deviation of the upper surface's column heights [d]", spread},
+          {"solid_fraction", "disc area / (layer.length * thickness)", fraction},
+          {"porosity", "1 - solid_fraction", 1.0 - fraction},
+          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded)", stats.contacts_per_disc},
+          {"max_overlap", "largest disc-disc overlap [d]", stats.max_overlap}};
 }
 
 std::string PackingExperiment::status(const World& w) const {

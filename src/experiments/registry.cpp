@@ -7,55 +7,15 @@
 
 #include "config/config.hpp"
 #include "experiments/experiment.hpp"
+#include "experiments/biaxial_experiment.hpp"
 #include "experiments/packing_experiment.hpp"
+#include "experiments/repose_experiment.hpp"
+#include "experiments/singly_vergent_experiment.hpp"
+#include "experiments/spec_from_config.hpp"
 #include "experiments/wedge_experiment.hpp"
 
 namespace orogen {
 namespace {
-
-// Thesis eq. 4.3: the plate must move less per step than the gravitational contact overlap,
-// v dt < m g / k_n, for the smallest disc.
-void check_convergence_step(const Config& c, const WedgeSpec& w) {
-  const double kn = c.get_float("contact.kn");
-  const double d_min = c.get_float("particles.d_min");
-  const double m_min = std::numbers::pi * 0.25 * d_min * d_min;
-  const double limit = stable_time_step(kn, 0.5 * m_min);
-  const double dt = c.get_float("time.dt") > 0 ? c.get_float("time.dt") : c.get_float("time.dt_fraction") * limit;
-  const double overlap = m_min / kn;
-  if (dt > limit) return;  // apply_engine_config refuses the time step itself
-  if (w.v * dt >= overlap)
-    throw config_error(c.source_of("wedge.speed"), "wedge.speed", fmt::format("{}", w.v),
-                       fmt::format("the plate would move {:.3g} d per step, more than the gravitational contact "
-                                   "overlap m g / k_n = {:.3g} d of the smallest disc (thesis eq. 4.3); "
-                                   "use wedge.speed < {:.4g}, or a smaller time.dt",
-                                   w.v * dt, overlap, overlap / dt));
-}
-
-PackingSpec packing_spec(const Config& c) {
-  PackingSpec p;
-  p.kind = packing_kind_from_name(c.get_string("particles.packing"));
-  p.length = c.get_float("layer.length");
-  p.thickness = c.get_float("layer.thickness");
-  p.d_min = c.get_float("particles.d_min");
-  p.d_max = c.get_float("particles.d_max");
-  p.seed = static_cast<std::uint64_t>(c.get_int("run.seed"));
-  p.mu_wall = c.get_float("contact.mu_wall");
-  if (p.d_min > p.d_max)
-    throw config_error(c.source_of("particles.d_min"), "particles.d_min", fmt::format("{}", p.d_min),
-                       fmt::format("must not exceed particles.d_max = {}", p.d_max));
-  return p;
-}
-
-SettleSpec settle_spec(const Config& c) {
-  SettleSpec s;
-  s.drag = c.get_float("settle.drag");
-  s.ke_threshold = c.get_float("settle.ke_threshold");
-  s.max_time = c.get_float("settle.max_time");
-  s.relax_time = c.get_float("settle.relax_time");
-  s.mu = c.get_float("settle.mu");
-  s.column_width_factor = c.get_float("layer.column_width_factor");
-  return s;
-}
 
 std::unique_ptr<Experiment> make_packing(const Config& c) {
   return std::make_unique<PackingExperiment>(packing_spec(c), settle_spec(c));
@@ -104,7 +64,7 @@ std::unique_ptr<Experiment> make_wedge(const Config& c) {
                          fmt::format("a packing at least {} d long for layer.thickness = {} (this one is {} d)",
                                      needed, w.h0, length));
   }
-  check_convergence_step(c, w);
+  check_imposed_speed(c, "wedge.speed");
   return std::make_unique<WedgeExperiment>(std::move(w));
 }
 
@@ -114,7 +74,11 @@ std::unique_ptr<Experiment> make_experiment(const Config& c) {
   const auto& name = c.get_string("run.experiment");
   if (name == "packing") return make_packing(c);
   if (name == "wedge") return make_wedge(c);
-  throw config_error(c.source_of("run.experiment"), "run.experiment", name, "one of: packing, wedge");
+  if (name == "repose") return make_repose_experiment(c);
+  if (name == "singly_vergent") return make_singly_vergent_experiment(c);
+  if (name == "biaxial") return make_biaxial_experiment(c);
+  throw config_error(c.source_of("run.experiment"), "run.experiment", name,
+                     "one of: packing, wedge, repose, singly_vergent, biaxial");
 }
 
 }  // namespace orogen

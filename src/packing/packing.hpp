@@ -24,6 +24,9 @@ struct PackingSpec {
   double overfill = 1.06;  // material placed relative to the target, trimmed after settling
 };
 
+// Indices in World::walls of the box that place_packing adds first.
+enum BoxWall : std::size_t { kBoxFloor = 0, kBoxLeft = 1, kBoxRight = 2 };
+
 // Adds the box (rough floor at y = 0, smooth side walls at x = 0 and x = length) and places
 // the particles above the floor without overlap. Enough material is placed to settle to
 // slightly more than the target thickness.

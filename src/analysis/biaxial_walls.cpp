@@ -1,0 +1,29 @@
+#include "analysis/biaxial_walls.hpp"
+
+#include <cmath>
+
+namespace orogen {
+
+std::vector<WallForce> elastic_wall_forces(const World& w) {
+  std::vector<WallForce> out(w.walls.size());
+  const auto& wc = w.neighbors.walls;
+  const auto& d = w.discs;
+  for (std::size_t k = 0; k < wc.size(); ++k) {
+    const auto i = wc.disc[k];
+    if (i >= d.size()) continue;  // list not rebuilt yet after a removal
+    const Wall& wall = w.walls[wc.wall[k]];
+    if (!wall.enabled) continue;
+    double cx, cy;
+    const double dist2 = closest_point_on_segment(wall, d.x[i], d.y[i], cx, cy);
+    const double r = d.radius[i];
+    if (dist2 >= r * r || dist2 == 0.0) continue;
+    const double dist = std::sqrt(dist2);
+    const double fn = w.law.kn * (r - dist);
+    // The disc is pushed along (disc - contact point); the wall the opposite way.
+    out[wc.wall[k]].fx -= fn * (d.x[i] - cx) / dist;
+    out[wc.wall[k]].fy -= fn * (d.y[i] - cy) / dist;
+  }
+  return out;
+}
+
+}  // namespace orogen

@@ -1,0 +1,358 @@
+#include "experiments/biaxial_experiment.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "analysis/biaxial_walls.hpp"
+#include "analysis/contact_stats.hpp"
+#include "analysis/surface.hpp"
+#include "config/config.hpp"
+#include "experiments/settled_layer.hpp"
+#include "experiments/spec_from_config.hpp"
+
+namespace orogen {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kUnitMass = std::numbers::pi / 4.0;  // disc of diameter 1: stresses are reported in m g / d^2
+constexpr std::uint64_t kCheckEvery = 200;            // steps per consolidation check window
+constexpr double kTaperBases[] = {0.1, 0.2, 0.3};     // basal friction coefficients of the summary tapers
+
+// Inward unit normals of the walls, in WallIndex order.
+constexpr double kNormalX[] = {0, 0, 1, -1};
+constexpr double kNormalY[] = {1, -1, 0, 0};
+
+double sample_width(const World& w) {
+  return w.walls[BiaxialExperiment::kRight].ax - w.walls[BiaxialExperiment::kLeft].ax;
+}
+double sample_height(const World& w) {
+  return w.walls[BiaxialExperiment::kTop].ay - w.walls[BiaxialExperiment::kBottom].ay;
+}
+
+double mean_kinetic_energy(const World& w) {
+  return w.discs.size() ? w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitMass : 0.0;
+}
+
+double solid_area(const Discs& d) {
+  double a = 0;
+  for (double r : d.radius) a += std::numbers::pi * r * r;
+  return a;
+}
+
+}  // namespace
+
+void BiaxialExperiment::setup(World& w) {
+  // Settled frictionless (settle.mu, also through the packing's relax phase), like every packing.
+  mu_ = w.law.mu;
+  w.law.mu = spec_.settle.mu;
+  PackingSpec p = spec_.packing;
+  p.length = spec_.width;
+  p.thickness = spec_.height;
+  settle_layer(w, p, spec_.settle);
+  w.removals.clear();  // the trimmed excess never belonged to the sample
+
+  // Gravity off; four smooth walls around the sample, long enough never to leave a gap at the
+  // corners as the walls move.
+  w.body.gx = w.body.gy = 0;
+  w.body.drag = 0;
+  double top = 0;
+  for (std::size_t i = 0; i < w.discs.size(); ++i) top = std::max(top, w.discs.y[i] + w.discs.radius[i]);
+  const double W = spec_.width;
+  Wall bottom{.name = "bottom", .ax = -0.5 * W, .ay = 0, .bx = 1.5 * W, .by = 0};
+  Wall upper{.name = "top", .ax = -0.5 * W, .ay = top, .bx = 1.5 * W, .by = top};
+  Wall left{.name = "left", .ax = 0, .ay = -0.5 * top, .bx = 0, .by = 1.5 * top};
+  Wall right{.name = "right", .ax = W, .ay = -0.5 * top, .bx = W, .by = 1.5 * top};
+  w.walls = {bottom, upper, left, right};
+  w.invalidate_neighbors();
+
+  sigma3_code_ = spec_.sigma3 * kUnitMass;
+  phase_ = Consolidating;
+  latest_ = output_sum_ = check_sum_ = {};
+  output_steps_ = check_steps_ = 0;
+  rows_.clear();
+}
+
+std::array<double, 4> BiaxialExperiment::wall_stresses(const World& w) const {
+  const auto f = elastic_wall_forces(w);
+  const double width = sample_width(w), height = sample_height(w);
+  std::array<double, 4> s{};
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double load = -(f[k].fx * kNormalX[k] + f[k].fy * kNormalY[k]);
+    s[k] = load / (k < kLeft ? width : height);
+  }
+  return s;
+}
+
+// A stress error e moves the wall outward at gain * e * d / (k_n dt): with one contact per d
+// of wall and a rigid sample behind, that removes the fraction `gain` of the error in one step.
+void BiaxialExperiment::servo(World& w, const std::array<double, 4>& s, bool top_too) const {
+  const double per_stress = spec_.servo_gain * spec_.packing.d_max / (w.law.kn * w.dt);
+  for (std::size_t k = top_too ? kTop : kLeft; k <= kRight; ++k) {
+    const double out = per_stress * (s[k] - sigma3_code_);
+    w.walls[k].vx = -out * kNormalX[k];
+    w.walls[k].vy = -out * kNormalY[k];
+  }
+}
+
+bool BiaxialExperiment::advance(World& w) {
+  if (phase_ == Done) return false;
+  // Set every step: a resumed run's engine configuration brings contact.mu back.
+  w.law.mu = phase_ == Consolidating ? spec_.settle.mu : mu_;
+  w.advance();
+  latest_ = wall_stresses(w);
+  for (std::size_t k = 0; k < 4; ++k) output_sum_[k] += latest_[k];
+  ++output_steps_;
+
+  if (phase_ == Consolidating) {
+    servo(w, latest_, true);
+    for (std::size_t k = 0; k < 4; ++k) check_sum_[k] += latest_[k];
+    if (++check_steps_ < kCheckEvery) return true;
+    // Consolidated when every wall's mean stress over the window is at the target and the
+    // sample is at rest.
+    bool steady = mean_kinetic_energy(w) < spec_.settle.ke_threshold;
+    for (std::size_t k = 0; k < 4; ++k)
+      steady = steady && std::fabs(check_sum_[k] / static_cast<double>(check_steps_) - sigma3_code_) <=
+                             spec_.tolerance * sigma3_code_;
+    check_sum_ = {};
+    check_steps_ = 0;
+    if (steady) {
+      start_shearing(w);
+    } else if (w.time > spec_.settle.max_time) {
+      throw InstabilityError(fmt::format("the biaxial sample did not consolidate to sigma3 = {} within "
+                                         "settle.max_time = {} (mean kinetic energy per disc {:.3g} m g d)",
+                                         spec_.sigma3, spec_.settle.max_time, mean_kinetic_energy(w)));
+    }
+    return true;
+  }
+
+  servo(w, latest_, false);
+  if (axial_strain(w) >= spec_.strain_end) {
+    for (auto& wall : w.walls) wall.vx = wall.vy = 0;
+    phase_ = Done;
+    return false;
+  }
+  return true;
+}
+
+void BiaxialExperiment::start_shearing(World& w) {
+  h0_ = sample_height(w);
+  a0_ = sample_width(w) * h0_;
+  coordination_start_ = measure_contacts(w).contacts_per_disc;
+  solid_fraction_start_ = solid_area(w.discs) / a0_;
+  w.walls[kTop].vx = 0;
+  w.walls[kTop].vy = -spec_.strain_rate * h0_;  // constant speed: the strain rate is nominal (of H0)
+  output_sum_ = {};
+  output_steps_ = 0;
+  phase_ = Shearing;
+}
+
+double BiaxialExperiment::axial_strain(const World& w) const {
+  return phase_ == Consolidating ? 0.0 : (h0_ - sample_height(w)) / h0_;
+}
+
+std::array<double, 4> BiaxialExperiment::mean_stresses() const {
+  if (output_steps_ == 0) return latest_;
+  std::array<double, 4> s{};
+  for (std::size_t k = 0; k < 4; ++k) s[k] = output_sum_[k] / static_cast<double>(output_steps_);
+  return s;
+}
+
+BiaxialRow BiaxialExperiment::row(const World& w) const {
+  const auto s = mean_stresses();
+  BiaxialRow r;
+  // Top and bottom (and the two sides) differ only by the sample's acceleration; their mean
+  // cancels it to first order.
+  r.sigma1 = 0.5 * (s[kTop] + s[kBottom]) / kUnitMass;
+  r.sigma3 = 0.5 * (s[kLeft] + s[kRight]) / kUnitMass;
+  if (phase_ != Consolidating) {
+    r.axial_strain = axial_strain(w);
+    r.vol_strain = sample_width(w) * sample_height(w) / a0_ - 1.0;
+  }
+  return r;
+}
+
+std::vector<SeriesColumn> BiaxialExperiment::columns() const {
+  return {{"step", "model time step"},
+          {"time", "model time since the sample was settled [sqrt(d/g)]"},
+          {"phase", "0 consolidating isotropically to sigma3, 1 shearing, 2 done"},
+          {"axial_strain", "axial shortening since shearing began, (H0 - H) / H0 (0 before) [-]"},
+          {"vol_strain", "area change since shearing began, (A - A0) / A0, positive when dilating [-]"},
+          {"width", "distance between the side walls [d]"},
+          {"height", "distance between the top and bottom walls [d]"},
+          {"sigma1", "axial stress: mean of the top and bottom wall forces per width, averaged since the "
+                     "previous output [m g / d^2]"},
+          {"sigma3", "confining stress: mean of the side wall forces per height, averaged since the previous "
+                     "output [m g / d^2]"},
+          {"phi_deg", "mobilised friction angle asin((sigma1 - sigma3) / (sigma1 + sigma3)) [deg]"},
+          {"mu_mobilised", "tan(phi): the mobilised bulk friction coefficient [-]"},
+          {"coordination",
+           "mean number of touching neighbours per disc (walls and discs of the same cluster excluded)"},
+          {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
+          {"n_discs", "number of discs"}};
+}
+
+std::vector<double> BiaxialExperiment::measure(const World& w) const {
+  const BiaxialRow r = row(w);
+  const double phi = mobilised_friction(r.sigma1, r.sigma3);
+  return {static_cast<double>(w.step), w.time, static_cast<double>(phase_), r.axial_strain, r.vol_strain,
+          sample_width(w), sample_height(w), r.sigma1, r.sigma3, phi * kDeg, std::tan(phi),
+          measure_contacts(w).contacts_per_disc, mean_kinetic_energy(w), static_cast<double>(w.discs.size())};
+}
+
+void BiaxialExperiment::after_output(const World& w) {
+  if (phase_ != Consolidating) rows_.push_back(row(w));
+  output_sum_ = {};
+  output_steps_ = 0;
+  displacements_.remember(w);
+}
+
+BiaxialResults BiaxialExperiment::results() const {
+  return analyse_biaxial(rows_, spec_.strain_end, spec_.residual_from, spec_.sigma3);
+}
+
+std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
+  if (rows_.empty()) return {};
+  const BiaxialResults r = results();
+  // Inertial number of the residual flow, I = gamma_dot d sqrt(rho / p), with the shear rate
+  // of an isochoric biaxial flow, 2 x the axial rate, and unit grain density.
+  double p = 0;
+  int n = 0;
+  for (const auto& row : rows_)
+    if (row.axial_strain >= spec_.residual_from * spec_.strain_end) { p += 0.5 * (row.sigma1 + row.sigma3); ++n; }
+  p = n ? p / n * kUnitMass : std::numeric_limits<double>::quiet_NaN();
+  const double inertial = 2 * spec_.strain_rate * 2 * mean_radius(w.discs) / std::sqrt(p);
+  std::vector<SummaryValue> out = {
+      {"phi_peak_deg", "peak mobilised friction angle [deg]", r.phi_peak * kDeg},
+      {"axial_strain_peak", "axial strain at the peak [-]", r.strain_at_peak},
+      {"phi_residual_deg",
+       fmt::format("mean mobilised friction angle beyond axial strain {:.4g} (residual state) [deg]",
+                   spec_.residual_from * spec_.strain_end),
+       r.phi_residual * kDeg},
+      {"mu_bulk_peak", "tan(phi_peak): peak bulk friction coefficient [-]", std::tan(r.phi_peak)},
+      {"mu_bulk_residual", "tan(phi_residual): residual bulk friction coefficient [-]", std::tan(r.phi_residual)},
+      {"dilatancy_peak", "d vol_strain / d axial_strain at the peak (positive: dilating) [-]", r.dilatancy_peak},
+      {"psi_peak_deg", "dilatancy angle at the peak, asin(D / (2 + D)) [deg]", r.psi_peak * kDeg},
+      {"vol_strain_end", "area change at the end, (A - A0) / A0 [-]", rows_.back().vol_strain},
+      {"sigma3", "target confining stress [m g / d^2]", spec_.sigma3},
+      {"sigma3_mean", "mean measured confining stress while shearing [m g / d^2]", r.sigma3_mean},
+      {"sigma3_max_dev", "largest |sigma3 - target| / target over the output steps while shearing [-]",
+       r.sigma3_max_dev},
+      {"solid_fraction_start", "disc area / sample area when shearing began [-]", solid_fraction_start_},
+      {"coordination_start", "contacts per disc when shearing began (walls and discs of the same cluster excluded)",
+       coordination_start_},
+      {"inertial_number", "2 x axial strain rate x mean diameter x sqrt(1 / mean stress) in the residual state; "
+                          "quasi-static below about 1e-3 [-]",
+       inertial},
+      {"n_discs", "number of discs", static_cast<double>(w.discs.size())}};
+  // Critical taper of a dry, non-cohesive wedge on a flat base (MODEL §9) from each bulk friction.
+  for (double mu_b : kTaperBases)
+    for (const auto& [name, phi] : {std::pair{"residual", r.phi_residual}, std::pair{"peak", r.phi_peak}})
+      out.push_back({fmt::format("taper_mub{}_{}_deg", mu_b, name),
+                     fmt::format("critical surface slope for basal friction {} and the {} bulk friction (NaN: "
+                                 "none, the base is not weaker) [deg]",
+                                 mu_b, name),
+                     critical_taper_or_nan(phi, mu_b) * kDeg});
+  return out;
+}
+
+void BiaxialExperiment::save(ArchiveWriter& out) const {
+  out.put_scalar("biaxial.phase", phase_);
+  out.put_scalar("biaxial.mu", mu_);
+  out.put_scalar("biaxial.sigma3_code", sigma3_code_);
+  out.put_scalar("biaxial.h0", h0_);
+  out.put_scalar("biaxial.a0", a0_);
+  out.put("biaxial.latest", std::vector<double>(latest_.begin(), latest_.end()));
+  out.put("biaxial.output_sum", std::vector<double>(output_sum_.begin(), output_sum_.end()));
+  out.put_scalar("biaxial.output_steps", output_steps_);
+  out.put("biaxial.check_sum", std::vector<double>(check_sum_.begin(), check_sum_.end()));
+  out.put_scalar("biaxial.check_steps", check_steps_);
+  std::vector<double> e, v, s1, s3;
+  for (const auto& r : rows_) {
+    e.push_back(r.axial_strain);
+    v.push_back(r.vol_strain);
+    s1.push_back(r.sigma1);
+    s3.push_back(r.sigma3);
+  }
+  out.put("biaxial.rows.axial_strain", e);
+  out.put("biaxial.rows.vol_strain", v);
+  out.put("biaxial.rows.sigma1", s1);
+  out.put("biaxial.rows.sigma3", s3);
+  out.put_scalar("biaxial.coordination_start", coordination_start_);
+  out.put_scalar("biaxial.solid_fraction_start", solid_fraction_start_);
+  displacements_.save(out, "biaxial.disp");
+}
+
+void BiaxialExperiment::load(const ArchiveReader& in) {
+  auto get4 = [&](std::string_view name, std::array<double, 4>& a) {
+    std::vector<double> v;
+    in.get(name, v);
+    std::copy_n(v.begin(), std::min<std::size_t>(4, v.size()), a.begin());
+  };
+  phase_ = in.get_scalar<int>("biaxial.phase");
+  mu_ = in.get_scalar<double>("biaxial.mu");
+  sigma3_code_ = in.get_scalar<double>("biaxial.sigma3_code");
+  h0_ = in.get_scalar<double>("biaxial.h0");
+  a0_ = in.get_scalar<double>("biaxial.a0");
+  get4("biaxial.latest", latest_);
+  get4("biaxial.output_sum", output_sum_);
+  output_steps_ = in.get_scalar<std::uint64_t>("biaxial.output_steps");
+  get4("biaxial.check_sum", check_sum_);
+  check_steps_ = in.get_scalar<std::uint64_t>("biaxial.check_steps");
+  std::vector<double> e, v, s1, s3;
+  in.get("biaxial.rows.axial_strain", e);
+  in.get("biaxial.rows.vol_strain", v);
+  in.get("biaxial.rows.sigma1", s1);
+  in.get("biaxial.rows.sigma3", s3);
+  rows_.clear();
+  for (std::size_t k = 0; k < e.size(); ++k) rows_.push_back({e[k], v[k], s1[k], s3[k]});
+  coordination_start_ = in.get_scalar<double>("biaxial.coordination_start");
+  solid_fraction_start_ = in.get_scalar<double>("biaxial.solid_fraction_start");
+  displacements_.load(in, "biaxial.disp");
+}
+
+std::string BiaxialExperiment::status(const World& w) const {
+  const auto s = latest_;
+  const double s3 = 0.5 * (s[kLeft] + s[kRight]) / kUnitMass;
+  if (phase_ == Consolidating)
+    return fmt::format("consolidating sigma3 {:.3g} KE/disc {:.2e}", s3, mean_kinetic_energy(w));
+  const double s1 = 0.5 * (s[kTop] + s[kBottom]) / kUnitMass;
+  return fmt::format("shearing strain {:.4f} phi {:.1f} deg sigma3 {:.3g}", axial_strain(w),
+                     mobilised_friction(s1, s3) * kDeg, s3);
+}
+
+double BiaxialExperiment::fraction_done(const World& w) const {
+  if (phase_ == Consolidating) return 0.0;
+  return std::min(1.0, axial_strain(w) / spec_.strain_end);
+}
+
+std::array<double, 4> BiaxialExperiment::view_box(const World&) const {
+  return {-2.0, spec_.width + 2.0, -2.0, spec_.height + 2.0};
+}
+
+std::unique_ptr<Experiment> make_biaxial_experiment(const Config& c) {
+  BiaxialSpec s;
+  s.width = c.get_float("biaxial.width");
+  s.height = c.get_float("biaxial.height");
+  s.sigma3 = c.get_float("biaxial.sigma3");
+  s.strain_rate = c.get_float("biaxial.strain_rate");
+  s.strain_end = c.get_float("biaxial.strain_end");
+  s.outputs = static_cast<int>(c.get_int("biaxial.outputs"));
+  s.servo_gain = c.get_float("biaxial.servo_gain");
+  s.packing = packing_spec(c);
+  s.settle = settle_spec(c);
+  // Quasi-static: inertial number below 1e-2 even at the lowest mean stress, sigma3, for the
+  // largest discs (MODEL's bulk friction is the rate-independent limit).
+  const double inertial = 2 * s.strain_rate * s.packing.d_max / std::sqrt(s.sigma3 * kUnitMass);
+  if (inertial > 1e-2)
+    throw config_error(c.source_of("biaxial.strain_rate"), "biaxial.strain_rate", fmt::format("{}", s.strain_rate),
+                       fmt::format("a quasi-static rate: inertial number 2 rate d sqrt(rho / sigma3) = {:.3g} is above "
+                                   "1e-2 (use biaxial.strain_rate <= {:.3g}, or a larger biaxial.sigma3)",
+                                   inertial, s.strain_rate * 1e-2 / inertial));
+  return std::make_unique<BiaxialExperiment>(std::move(s));
+}
+
+}  // namespace orogen

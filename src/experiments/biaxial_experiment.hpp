@@ -1,0 +1,90 @@
+#pragma once
+// The biaxial test (MODEL §9: the bulk friction angle phi of the particle material, which the
+// critical taper needs, has to be measured): a settled sample in a box of four smooth walls,
+// without gravity, first consolidated isotropically to the confining stress sigma_3, then
+// shortened by the top wall at a constant slow speed while the side walls hold sigma_3. The
+// mobilised friction angle asin((s1 - s3) / (s1 + s3)) gives the bulk friction at its peak and
+// in the residual state, and from them the critical taper of a dry wedge.
+#include <memory>
+
+#include "analysis/biaxial_results.hpp"
+#include "analysis/displacement_tracker.hpp"
+#include "experiments/experiment.hpp"
+#include "experiments/packing_experiment.hpp"
+
+namespace orogen {
+
+struct BiaxialSpec {
+  double width = 30, height = 60;  // sample settled in a box this size (d)
+  double sigma3 = 5;               // confining stress (m g / d^2, m the mass of a disc of diameter d)
+  double strain_rate = 2.5e-4;      // axial strain rate of the top wall (per sqrt(d/g))
+  double strain_end = 0.2;         // stop at this axial strain
+  int outputs = 100;               // output steps over the shearing
+  double servo_gain = 1.0;         // fraction of a wall's stress error removed per step (see docs)
+  double tolerance = 0.01;         // consolidated: every wall stress within this of sigma3
+  double residual_from = 2.0 / 3;  // residual state: beyond this fraction of strain_end
+  PackingSpec packing;
+  SettleSpec settle;
+};
+
+class BiaxialExperiment final : public Experiment {
+ public:
+  explicit BiaxialExperiment(BiaxialSpec spec) : spec_(std::move(spec)) {}
+
+  void setup(World& world) override;
+  bool advance(World& world) override;
+  std::vector<SeriesColumn> columns() const override;
+  std::vector<double> measure(const World& world) const override;
+  std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const override {
+    return displacements_.fields(world);
+  }
+  void after_output(const World& world) override;
+  std::optional<double> output_interval() const override {
+    return spec_.strain_end / spec_.strain_rate / spec_.outputs;
+  }
+  void save(ArchiveWriter& out) const override;
+  void load(const ArchiveReader& in) override;
+  std::vector<SummaryValue> summary(const World& world) const override;
+  std::string status(const World& world) const override;
+  double fraction_done(const World& world) const override;
+  double h0() const override { return spec_.height; }
+  std::array<double, 4> view_box(const World& world) const override;
+
+  enum Phase : int { Consolidating = 0, Shearing = 1, Done = 2 };
+  Phase phase() const { return static_cast<Phase>(phase_); }
+  // Axial strain since shearing began, (H0 - H) / H0.
+  double axial_strain(const World& world) const;
+  // The results so far (rows recorded at output steps while shearing).
+  BiaxialResults results() const;
+
+  // Wall order in World::walls.
+  enum WallIndex : std::size_t { kBottom = 0, kTop = 1, kLeft = 2, kRight = 3 };
+
+ private:
+  // Compressive stresses on the four walls now, from their elastic contact forces (code units).
+  std::array<double, 4> wall_stresses(const World& world) const;
+  // Sets the velocity of each servoed wall from its stress error.
+  void servo(World& world, const std::array<double, 4>& stress, bool top_too) const;
+  void start_shearing(World& world);
+  // Stresses averaged over the steps since the last output (the latest ones if none).
+  std::array<double, 4> mean_stresses() const;
+  BiaxialRow row(const World& world) const;
+
+  BiaxialSpec spec_;
+  int phase_ = Consolidating;
+  double mu_ = 0.3;                    // the material's friction, switched on for shearing
+  double sigma3_code_ = 0;             // target stress in code units (force per length)
+  double h0_ = 0, a0_ = 0;             // height and area when shearing began
+  std::array<double, 4> latest_{};     // wall stresses of the last step
+  std::array<double, 4> output_sum_{};  // summed over the steps since the last output
+  std::uint64_t output_steps_ = 0;
+  std::array<double, 4> check_sum_{};  // summed over the current consolidation check window
+  std::uint64_t check_steps_ = 0;
+  std::vector<BiaxialRow> rows_;       // output rows while shearing, for the summary
+  double coordination_start_ = 0, solid_fraction_start_ = 0;
+  DisplacementTracker displacements_;
+};
+
+std::unique_ptr<Experiment> make_biaxial_experiment(const Config& config);
+
+}  // namespace orogen

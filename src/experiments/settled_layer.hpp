@@ -1,0 +1,11 @@
+#pragma once
+// Builds the settled starting material of an experiment in its own world: the packing of
+// MODEL §10 placed in a box, settled, trimmed and relaxed (the packing experiment's stages),
+// then the clock reset to zero so that the experiment's outputs count from its own start.
+#include "experiments/packing_experiment.hpp"
+
+namespace orogen {
+
+void settle_layer(World& world, const PackingSpec& packing, const SettleSpec& settle);
+
+}  // namespace orogen

@@ -1,0 +1,210 @@
+#include "experiments/singly_vergent_experiment.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "config/config.hpp"
+#include "experiments/settled_layer.hpp"
+#include "experiments/spec_from_config.hpp"
+
+namespace orogen {
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::uint64_t kHousekeepingEvery = 100;
+constexpr std::size_t kMaxGap = 2;  // surface columns below the raised level inside the wedge
+constexpr std::size_t kBackstop = kBoxRight;  // the box's right wall; the left one is the far wall
+
+}  // namespace
+
+void SinglyVergentExperiment::setup(World& w) {
+  PackingSpec p = spec_.packing;
+  p.length = spec_.length;
+  p.thickness = spec_.h0;
+  settle_layer(w, p, spec_.settle);
+  w.walls[kBoxFloor].friction = WallFriction::Rough;
+  w.walls[kBoxFloor].mu = spec_.mu_b;
+  // Smooth, as the analytic and finite element solutions assume (thesis 3.2.3).
+  w.walls[kBackstop].friction = WallFriction::Smooth;
+  w.walls[kBackstop].vx = -spec_.speed;
+  w.walls[kBackstop].by = std::max(w.walls[kBackstop].by, 6.0 * spec_.h0 + 20.0);
+  initial_discs_ = static_cast<std::int64_t>(w.discs.size());
+}
+
+bool SinglyVergentExperiment::advance(World& w) {
+  if (shortening(w) >= spec_.shortening) return false;
+  w.advance();
+  if (w.step % kHousekeepingEvery == 0) {
+    // A disc squeezed out through a wall's end would fall for ever.
+    const auto& d = w.discs;
+    std::vector<std::uint8_t> flags(d.size(), 0);
+    bool any = false;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      flags[i] = d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.walls[kBackstop].ax + 2.0;
+      any |= flags[i] != 0;
+    }
+    if (any) w.remove(flags, RemovalReason::LeftDomain);
+  }
+  return true;
+}
+
+SinglyVergentShape SinglyVergentExperiment::shape(const World& w) const {
+  SinglyVergentShape g;
+  const auto& d = w.discs;
+  g.backstop = w.walls[kBackstop].ax;
+  const Surface s = measure_surface(d, 0.0, g.backstop, spec_.column_width_factor * mean_radius(d));
+  // The wedge: surface columns raised by a disc diameter, contiguous from the backstop (gaps of
+  // up to kMaxGap columns are bridged); a detached pop-up further out is not part of it.
+  const double raised = spec_.h0 + 1.5 * spec_.packing.d_max;
+  double top = -std::numeric_limits<double>::infinity();
+  std::size_t gap = 0;
+  bool found = false;
+  for (std::size_t k = s.height.size(); k-- > 0;) {
+    const double h = s.height[k];
+    if (std::isfinite(h) && h > raised) {
+      g.front = s.column_centre(k) - 0.5 * s.width;
+      top = std::max(top, h);
+      found = true;
+      gap = 0;
+    } else if (found && ++gap > kMaxGap) {
+      break;
+    }
+  }
+  g.has_wedge = found && g.front < g.backstop - 1.0;
+  if (!g.has_wedge) return g;
+  g.height = top - spec_.h0;
+  g.taper_mean = std::atan(g.height / (g.backstop - g.front));
+  // The column at the backstop is dragged up the wall; it is left out of the fits.
+  const double x_hi = g.backstop - spec_.packing.d_max, mid = 0.5 * (g.front + x_hi);
+  const double inf = std::numeric_limits<double>::infinity();
+  auto angle = [&](double lo, double hi) {
+    const ProfileFit f = fit_profile(s, lo, hi, -inf, inf);
+    return f.valid() ? std::atan(f.slope) : kNaN;
+  };
+  g.taper = angle(g.front, x_hi);
+  g.taper_front = angle(g.front, mid);
+  g.taper_back = angle(mid, x_hi);
+  return g;
+}
+
+std::vector<SeriesColumn> SinglyVergentExperiment::columns() const {
+  return {{"step", "model time step"},
+          {"time", "model time since the backstop started [sqrt(d/g)]"},
+          {"shortening", "backstop displacement / h0"},
+          {"backstop", "x of the backstop [h0]"},
+          {"front", "deformation front: left end of the surface raised above h0 + 1.5 d_max, contiguous from the backstop [h0]"},
+          {"width", "wedge width: backstop minus front [h0]"},
+          {"height", "highest surface point of the wedge minus h0 [h0]"},
+          {"taper", "wedge taper: least-squares slope of the surface from the front to the backstop [deg]"},
+          {"taper_front", "least-squares surface slope over the front half of the wedge [deg]"},
+          {"taper_back", "least-squares surface slope over the back half, next to the backstop [deg]"},
+          {"taper_mean", "atan(height / width) [deg]"},
+          {"slip_base", "fraction of touching basal contacts at the Coulomb limit"},
+          {"n_discs", "discs in the model"}};
+}
+
+std::vector<double> SinglyVergentExperiment::measure(const World& w) const {
+  const SinglyVergentShape g = shape(w);
+  double touching = 0, limit = 0;
+  const auto& wc = w.neighbors.walls;
+  for (std::size_t k = 0; k < wc.size(); ++k) {
+    if (wc.wall[k] != kBoxFloor || !wc.touching[k]) continue;
+    touching += 1;
+    limit += wc.at_limit[k];
+  }
+  const double h0 = spec_.h0;
+  auto or_nan = [&](double v) { return g.has_wedge ? v : kNaN; };
+  return {static_cast<double>(w.step), w.time, shortening(w), g.backstop / h0, or_nan(g.front / h0),
+          or_nan((g.backstop - g.front) / h0), or_nan(g.height / h0), or_nan(g.taper * kDeg),
+          or_nan(g.taper_front * kDeg), or_nan(g.taper_back * kDeg), or_nan(g.taper_mean * kDeg),
+          touching > 0 ? limit / touching : 0.0, static_cast<double>(w.discs.size())};
+}
+
+std::vector<std::pair<std::string, double>> SinglyVergentExperiment::scalars(const World& w) const {
+  return {{"S", shortening(w)}};
+}
+
+void SinglyVergentExperiment::after_output(const World& w) {
+  displacements_.remember(w);
+  const SinglyVergentShape g = shape(w);
+  history_s_.push_back(shortening(w));
+  history_taper_.push_back(g.has_wedge ? g.taper * kDeg : kNaN);
+}
+
+std::vector<SummaryValue> SinglyVergentExperiment::summary(const World& w) const {
+  // Steady taper: mean and spread over the outputs after the transient.
+  const double from = spec_.steady_from * spec_.shortening;
+  double sum = 0, sum2 = 0, n = 0;
+  for (std::size_t k = 0; k < history_s_.size(); ++k) {
+    if (history_s_[k] < from || !std::isfinite(history_taper_[k])) continue;
+    sum += history_taper_[k];
+    sum2 += history_taper_[k] * history_taper_[k];
+    n += 1;
+  }
+  const double mean = n > 0 ? sum / n : kNaN;
+  const double sd = n > 1 ? std::sqrt(std::max(0.0, (sum2 - n * mean * mean) / (n - 1))) : kNaN;
+  const SinglyVergentShape g = shape(w);
+  auto or_nan = [&](double v) { return g.has_wedge ? v : kNaN; };
+  return {{"taper_steady_deg", "mean wedge taper over the outputs after singly.steady_from of the run [deg]", mean},
+          {"taper_steady_sd_deg", "standard deviation of the taper over those outputs [deg]", sd},
+          {"taper_final_deg", "wedge taper at the end [deg]", or_nan(g.taper * kDeg)},
+          {"taper_front_final_deg", "surface slope over the front half of the wedge at the end [deg]",
+           or_nan(g.taper_front * kDeg)},
+          {"taper_back_final_deg", "surface slope over the back half (at the backstop) at the end [deg]",
+           or_nan(g.taper_back * kDeg)},
+          {"width_final", "wedge width at the end [h0]", or_nan((g.backstop - g.front) / spec_.h0)},
+          {"height_final", "wedge height at the end [h0]", or_nan(g.height / spec_.h0)},
+          {"shortening", "backstop displacement at the end [h0]", shortening(w)}};
+}
+
+void SinglyVergentExperiment::save(ArchiveWriter& out) const {
+  out.put_scalar("singly.initial_discs", initial_discs_);
+  out.put("singly.history_s", history_s_);
+  out.put("singly.history_taper", history_taper_);
+  displacements_.save(out, "singly");
+}
+
+void SinglyVergentExperiment::load(const ArchiveReader& in) {
+  initial_discs_ = in.get_scalar<std::int64_t>("singly.initial_discs");
+  in.get("singly.history_s", history_s_);
+  in.get("singly.history_taper", history_taper_);
+  displacements_.load(in, "singly");
+}
+
+std::string SinglyVergentExperiment::status(const World& w) const {
+  const SinglyVergentShape g = shape(w);
+  return fmt::format("shortening {:.2f}/{:.1f} h0, taper {:.1f} deg", shortening(w), spec_.shortening,
+                     g.has_wedge ? g.taper * kDeg : 0.0);
+}
+
+std::array<double, 4> SinglyVergentExperiment::view_box(const World&) const {
+  return {-1.0, spec_.length + 1.0, -1.0, std::max(4.0 * spec_.h0, 0.35 * spec_.length)};
+}
+
+std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& c) {
+  SinglyVergentSpec s;
+  s.h0 = c.get_float("layer.thickness");
+  s.length = c.get_float("layer.length");
+  s.speed = c.get_float("singly.speed");
+  s.mu_b = c.get_float("singly.mu_b");
+  s.shortening = c.get_float("singly.shortening");
+  s.outputs = static_cast<int>(c.get_int("singly.outputs"));
+  s.steady_from = c.get_float("singly.steady_from");
+  s.column_width_factor = c.get_float("layer.column_width_factor");
+  s.packing = packing_spec(c);
+  s.settle = settle_spec(c);
+  if (s.shortening * s.h0 > 0.8 * s.length)
+    throw config_error(c.source_of("singly.shortening"), "singly.shortening", fmt::format("{}", s.shortening),
+                       fmt::format("at most 0.8 layer.length / layer.thickness = {:.3g}: the backstop must stay "
+                                   "well clear of the far wall",
+                                   0.8 * s.length / s.h0));
+  check_imposed_speed(c, "singly.speed");
+  return std::make_unique<SinglyVergentExperiment>(std::move(s));
+}
+
+}  // namespace orogen

@@ -1,0 +1,76 @@
+#pragma once
+// The singly-vergent critical wedge (thesis 3.2.3, Appendix A; after Burbidge and Braun 2002):
+// a settled layer of thickness h0 on a rough Coulomb base is shortened by a smooth rigid
+// backstop (the right wall) moving left at constant speed; the far (left) wall stays. A wedge
+// grows against the backstop; its surface taper is measured through time and compared with
+// the critical taper of the material's bulk friction (biaxial experiment).
+#include "analysis/displacement_tracker.hpp"
+#include "analysis/profile_fit.hpp"
+#include "experiments/experiment.hpp"
+#include "experiments/packing_experiment.hpp"
+
+namespace orogen {
+
+struct SinglyVergentSpec {
+  double h0 = 10;            // layer thickness (d)
+  double length = 200;       // layer length (d)
+  double speed = 0.025;      // backstop speed (sqrt(g d))
+  double mu_b = 0.2;         // basal Coulomb friction
+  double shortening = 5;     // run until the backstop has moved this far (h0)
+  int outputs = 50;          // output steps over the run
+  double steady_from = 0.5;  // the taper statistics use outputs after this fraction of the run
+  double column_width_factor = 2.3;
+  PackingSpec packing;
+  SettleSpec settle;
+};
+
+// The wedge's shape at one moment (lengths in d, angles in rad).
+struct SinglyVergentShape {
+  double backstop = 0;  // x of the backstop
+  double front = 0;     // deformation front: left end of the raised surface next to the backstop
+  double height = 0;    // highest surface point of the wedge minus h0
+  double taper = 0;     // least-squares surface slope from the front to the backstop
+  double taper_front = 0, taper_back = 0;  // the same over the front and back halves
+  double taper_mean = 0;  // atan(height / (backstop - front))
+  bool has_wedge = false;
+};
+
+class SinglyVergentExperiment final : public Experiment {
+ public:
+  explicit SinglyVergentExperiment(SinglyVergentSpec spec) : spec_(std::move(spec)) {}
+
+  void setup(World& world) override;
+  bool advance(World& world) override;
+  std::vector<SeriesColumn> columns() const override;
+  std::vector<double> measure(const World& world) const override;
+  std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const override {
+    return displacements_.fields(world);
+  }
+  std::vector<std::pair<std::string, double>> scalars(const World& world) const override;
+  void after_output(const World& world) override;
+  void save(ArchiveWriter& out) const override;
+  void load(const ArchiveReader& in) override;
+  std::vector<SummaryValue> summary(const World& world) const override;
+  std::string status(const World& world) const override;
+  double fraction_done(const World& world) const override { return shortening(world) / spec_.shortening; }
+  double h0() const override { return spec_.h0; }
+  std::array<double, 4> view_box(const World& world) const override;
+  std::optional<double> output_interval() const override {
+    return spec_.shortening * spec_.h0 / spec_.speed / spec_.outputs;
+  }
+
+  // Backstop displacement / h0.
+  double shortening(const World& world) const { return spec_.speed * world.time / spec_.h0; }
+  SinglyVergentShape shape(const World& world) const;
+
+ private:
+  SinglyVergentSpec spec_;
+  std::int64_t initial_discs_ = 0;
+  // Shortening and taper at each output, for the steady-state statistics of the summary.
+  std::vector<double> history_s_, history_taper_;
+  DisplacementTracker displacements_;
+};
+
+std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& config);
+
+}  // namespace orogen
