@@ -107,14 +107,6 @@ def safe_name(name):
     return re.sub(r"[^A-Za-z0-9._+=-]", "-", name)
 
 
-def save_figure(fig, path):
-    """Writes the figure as PNG atomically (temporary file in the same folder, then rename)."""
-    try:
-        oio.write_atomically(path, lambda f: fig.savefig(f, format="png", dpi=110), binary=True, suffix=".png")
-    finally:
-        plt.close(fig)
-
-
 def no_data(ax, text="no data"):
     ax.text(0.5, 0.5, text, transform=ax.transAxes, ha="center", va="center", color="0.4")
 
@@ -314,7 +306,7 @@ def chart_repose_profile(item, path):
     labels.append("held discs (colours: initial-depth horizons)")
     ax.legend(handles, labels, fontsize=8, loc="upper right")
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 def row_key(item, variants):
@@ -369,7 +361,7 @@ def chart_repose_grid(items, path):
                 ax.legend(fontsize=6, loc="upper right")
     fig.suptitle("Angle of repose: surface at rest (grey), fitted columns (dots) and line (dashed)", fontsize=11)
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 def chart_repose_angle_vs_mu(items, path):
@@ -386,26 +378,11 @@ def chart_repose_angle_vs_mu(items, path):
                 continue
             drawn = True
             ls, marker = styles.get(v, ("-.", "D"))
-            ax.plot([it["mu"] for it in sel], [it["angle"] for it in sel], marker, color=colour, ms=4, alpha=0.45,
-                    mfc="none")
-            g = group_mean(sel, lambda it: it["mu"], lambda it: it["angle"])
-            mus = sorted(g)
-            means = [g[m][0] for m in mus]
-            sds = [g[m][1] if finite(g[m][1]) else 0.0 for m in mus]
             label = packing_label(packing) + (" (%s)" % v if len(variants) > 1 else "")
-            ax.errorbar(mus, means, yerr=sds, fmt=ls, marker=marker, color=colour, lw=1.6, ms=6, capsize=3,
-                        label=label)
+            plot_runs_and_means(ax, sel, "angle", colour, ls, marker, label)
     ax.set(xlabel="contact friction μ", ylabel="angle of repose [deg]",
            title="Angle of repose against contact friction (cf. thesis Fig 3.4, after Oger et al.)")
-    ax.set_xlim(left=0)
-    ax.set_ylim(bottom=0)
-    ax.grid(True, alpha=0.3)
-    if drawn:
-        ax.legend(fontsize=9, loc="lower right", title="mean ± sd over runs; open: each run", title_fontsize=8)
-    else:
-        no_data(ax)
-    fig.tight_layout()
-    save_figure(fig, path)
+    finish_mu_chart(fig, ax, drawn, path, fontsize=9)
 
 
 REPOSE_COLUMNS = ("run", "packing", "variant", "mu", "angle_deg", "angle_r2", "concavity_deg",
@@ -548,7 +525,31 @@ def chart_biaxial_stress_strain(items, path):
         ax_p.text(0.01, 0.99, "not sheared (no rows with phase >= 1): %s" % ", ".join(unsheared),
                   transform=ax_p.transAxes, ha="left", va="top", fontsize=7, color="tab:red")
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
+
+
+def plot_runs_and_means(ax, items, key, colour, ls, marker, label, mfc=None):
+    """Each run as an open marker at (mu, item[key]), and the mean ± sd over runs per mu as a line."""
+    ax.plot([it["mu"] for it in items], [it[key] for it in items], marker, color=colour, ms=4, alpha=0.45,
+            mfc="none")
+    g = group_mean(items, lambda it: it["mu"], lambda it: it[key])
+    mus = sorted(g)
+    ax.errorbar(mus, [g[m][0] for m in mus], yerr=[g[m][1] if finite(g[m][1]) else 0.0 for m in mus],
+                fmt=ls, marker=marker, color=colour, lw=1.6, ms=6, capsize=3, mfc=mfc, label=label)
+
+
+def finish_mu_chart(fig, ax, drawn, path, fontsize):
+    """Axes from zero, grid, legend (or 'no data'), then the PNG."""
+    ax.set_xlim(left=0)
+    ax.set_ylim(bottom=0)
+    ax.grid(True, alpha=0.3)
+    if drawn:
+        ax.legend(fontsize=fontsize, loc="lower right", title="mean ± sd over runs; open: each run",
+                  title_fontsize=8)
+    else:
+        no_data(ax)
+    fig.tight_layout()
+    oio.save_figure(fig, path)
 
 
 def chart_biaxial_friction_vs_mu(items, path):
@@ -563,27 +564,14 @@ def chart_biaxial_friction_vs_mu(items, path):
             if not pts:
                 continue
             drawn = True
-            ax.plot([it["mu"] for it in pts], [it[key] for it in pts], marker, color=colour, ms=4, alpha=0.4,
-                    mfc="none")
-            g = group_mean(pts, lambda it: it["mu"], lambda it: it[key])
-            mus = sorted(g)
-            ax.errorbar(mus, [g[m][0] for m in mus], yerr=[g[m][1] if finite(g[m][1]) else 0.0 for m in mus],
-                        fmt=ls, marker=marker, color=colour, lw=1.6, ms=6, capsize=3,
-                        mfc=colour if what == "peak" else "white", label="%s, %s" % (packing_label(packing), what))
+            plot_runs_and_means(ax, pts, key, colour, ls, marker, "%s, %s" % (packing_label(packing), what),
+                                mfc=colour if what == "peak" else "white")
     if all_mu:
         m = np.linspace(0, max(all_mu) * 1.05, 50)
         ax.plot(m, np.degrees(np.arctan(m)), ":", color="0.4", lw=1.2, label="atan(μ): contact friction angle")
     ax.set(xlabel="contact friction μ", ylabel="bulk friction angle φ [deg]",
            title="Bulk friction of the packings (biaxial test): peak and residual")
-    ax.set_xlim(left=0)
-    ax.set_ylim(bottom=0)
-    ax.grid(True, alpha=0.3)
-    if drawn:
-        ax.legend(fontsize=8, loc="lower right", title="mean ± sd over runs; open: each run", title_fontsize=8)
-    else:
-        no_data(ax)
-    fig.tight_layout()
-    save_figure(fig, path)
+    finish_mu_chart(fig, ax, drawn, path, fontsize=8)
 
 
 BIAXIAL_VALUES = ("phi_peak_deg", "axial_strain_peak", "phi_residual_deg", "mu_bulk_peak", "mu_bulk_residual",
@@ -793,7 +781,7 @@ def chart_singly_taper(items, path, bulk=None):
     axes[0][0].legend(handles=handles, fontsize=7, loc="upper left", ncol=2)
     fig.suptitle("Singly-vergent wedge: taper against shortening (cf. thesis Fig 3.23)", fontsize=11)
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 def final_surface(it):
@@ -875,7 +863,7 @@ def chart_singly_profiles(items, path):
     if not items:
         no_data(ax)
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 SINGLY_COLUMNS = ("run", "packing", "mu", "mu_b", "taper_steady_deg", "taper_steady_sd_deg", "taper_final_deg",

@@ -1,6 +1,6 @@
 """Readers of the files `orogen run` and `orogen sweep` write, shared by the chart scripts.
 
-Used by python/granular_charts.py (python/wedge_charts.py keeps its own readers). Only the
+Used by python/granular_charts.py and python/wedge_charts.py. Only the
 standard library, numpy and h5py (for snapshots.h5) are needed; import it with python/ on
 sys.path:
 
@@ -438,3 +438,12 @@ def write_atomically(path, write, binary=False, suffix=".tmp"):
 
 def write_text(path, text):
     write_atomically(path, lambda f: f.write(text))
+
+
+def save_figure(fig, path):
+    """Writes a matplotlib figure as PNG atomically, then closes it."""
+    import matplotlib.pyplot as plt  # only the chart scripts call this; they set the backend
+    try:
+        write_atomically(path, lambda f: fig.savefig(f, format="png", dpi=110), binary=True, suffix=".png")
+    finally:
+        plt.close(fig)

@@ -29,7 +29,6 @@ import json
 import math
 import os
 import sys
-import tempfile
 
 import numpy as np
 import matplotlib
@@ -37,6 +36,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import orogen_io as oio  # noqa: E402
 
 try:
     import h5py
@@ -57,38 +59,7 @@ FRONT_COLUMNS = ("Dp", "Mp", "Dr", "Mr", "T")
 
 def read_series(path):
     """Reads series.csv: returns (columns: dict name -> float array, descriptions: dict)."""
-    descriptions = {}
-    header = None
-    rows = []
-    with open(path, "r", encoding="utf-8") as f:
-        for line in f:
-            line = line.strip()
-            if not line:
-                continue
-            if line.startswith("#"):
-                text = line[1:].strip()
-                name, sep, desc = text.partition(":")
-                if sep and name and " " not in name.strip():
-                    descriptions[name.strip()] = desc.strip()
-                continue
-            if header is None:
-                header = [h.strip() for h in line.split(",")]
-                continue
-            fields = line.split(",")
-            if len(fields) != len(header):
-                continue  # a malformed line (should not happen: the file is written atomically)
-            row = []
-            for v in fields:
-                try:
-                    row.append(float(v))
-                except ValueError:
-                    row.append(float("nan"))
-            rows.append(row)
-    if header is None:
-        raise ValueError("%s: no CSV header row" % path)
-    data = np.array(rows, dtype=float).reshape(len(rows), len(header))
-    columns = {name: data[:, i] for i, name in enumerate(header)}
-    return columns, descriptions
+    return oio.read_table(path)
 
 
 def column(series, name):
@@ -144,12 +115,8 @@ def read_topography(h5_path, max_profiles=None):
             width = COLUMN_WIDTH_RADII * float(np.mean(r))
             if not (width > 0):
                 width = 1.0
-            col = np.floor(x / width).astype(np.int64)
-            lo, hi = int(col.min()), int(col.max())
-            height = np.full(hi - lo + 1, -np.inf)
-            np.maximum.at(height, col - lo, y + r)
-            height[~np.isfinite(height)] = np.nan
-            centres = (np.arange(lo, hi + 1) + 0.5) * width
+            lo, hi = np.floor(x.min() / width), np.floor(x.max() / width) + 1  # grid anchored at x = 0
+            centres, height = oio.surface_columns(x, y, r, lo * width, hi * width, width)
             out.append(dict(output=k, step=step, S=s_value, x=centres / h0, height=height / h0, h0=h0))
     return out
 
@@ -272,42 +239,9 @@ def summarize(run):
 # Output
 
 
-def _umask_mode():
-    mask = os.umask(0)
-    os.umask(mask)
-    return 0o666 & ~mask
-
-
-def save_figure(fig, path):
-    """Writes the figure as PNG atomically (temporary file in the same folder, then rename)."""
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=".png", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            fig.savefig(f, format="png", dpi=110)
-        os.chmod(tmp, _umask_mode())  # mkstemp makes 0600; give the file ordinary permissions
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-    finally:
-        plt.close(fig)
-
-
 def write_json(obj, path):
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=".json", dir=folder)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            json.dump(obj, f, indent=2, allow_nan=False)
-            f.write("\n")
-        os.chmod(tmp, _umask_mode())
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+    text = json.dumps(obj, indent=2, allow_nan=False) + "\n"
+    oio.write_text(path, text)
 
 
 def run_colors(n):
@@ -375,7 +309,7 @@ def chart_height_peak(runs, path):
         for ax in axes:
             no_data(ax)
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 def chart_tapers(runs, path):
@@ -406,7 +340,7 @@ def chart_tapers(runs, path):
         else:
             no_data(ax, "no deformation front yet")
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 def chart_fronts(runs, path):
@@ -434,7 +368,7 @@ def chart_fronts(runs, path):
     if not drawn:
         no_data(ax, "no front yet")
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 def chart_slip(runs, path):
@@ -460,7 +394,7 @@ def chart_slip(runs, path):
             no_data(ax)
     axes[1].set_xlabel("S (convergence / h0)")
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 def surface_at(profile, x):
@@ -612,7 +546,7 @@ def chart_topography(runs, path):
             ax.set_xlabel("x / h0 from the S-point")
         ax.legend(fontsize=7, loc="upper left", ncol=5)
     fig.tight_layout()
-    save_figure(fig, path)
+    oio.save_figure(fig, path)
 
 
 # --------------------------------------------------------------------------------------------

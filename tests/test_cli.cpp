@@ -66,12 +66,13 @@ int decode_status(int raw) {
 
 // Runs `orogen ARGS` through the shell (ARGS is shell syntax), capturing stdout and stderr
 // in files under `scratch`.
-Result orogen_cli(const std::string& args, const fs::path& scratch) {
+// `env` is prefixed to the command line (e.g. "OROGEN_MIN_PARALLEL_ITEMS=16 ").
+Result orogen_cli(const std::string& args, const fs::path& scratch, const std::string& env = "") {
   static int serial = 0;
   const fs::path out = scratch / ("stdout_" + std::to_string(serial));
   const fs::path err = scratch / ("stderr_" + std::to_string(serial++));
   const std::string cmd =
-      "'" + std::string(OROGEN_BINARY) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+      env + "'" + std::string(OROGEN_BINARY) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
   Result r;
   r.status = decode_status(std::system(cmd.c_str()));
   r.out = slurp(out);
@@ -210,6 +211,43 @@ TEST_F(Cli, SameSeedSameOutputsForOneAndTwoThreads) {
     // Above the parallel threshold, so the 2-thread run took its parallel paths.
     EXPECT_GT(SnapshotReader(one / "snapshots.h5").read(0).size(), static_cast<std::size_t>(kMinParallelItems));
   }
+}
+
+// Every experiment, small, with the parallel threshold lowered so that two threads take the
+// parallel paths of every loop: the outputs must not depend on the thread count.
+TEST_F(Cli, EveryExperimentSameOutputsForOneAndTwoThreads) {
+  const std::string quiet = " --set output.progress=never --set output.vtp=false";
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"repose", "--set run.experiment=repose --set particles.packing=random_clusters --set repose.size=16"
+                 " --set repose.min_time=5 --set repose.max_time=15"},
+      {"singly", "--set run.experiment=singly_vergent --set particles.packing=random_discs --set layer.length=60"
+                 " --set layer.thickness=6 --set contact.kn=2000 --set singly.speed=0.05 --set singly.shortening=1"
+                 " --set singly.outputs=5"},
+      {"biaxial", "--set run.experiment=biaxial --set particles.packing=random_clusters --set biaxial.width=10"
+                  " --set biaxial.height=20 --set biaxial.strain_rate=5e-4 --set biaxial.strain_end=0.02"
+                  " --set biaxial.outputs=6"},
+      {"wedge", "--set run.experiment=wedge --set layer.thickness=5 --set wedge.tile_length=4"
+                " --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.s_end=0.2 --set wedge.outputs=4"
+                " --set wedge.erosion_height=0.9"},
+  };
+  for (const auto& [name, args] : runs) {
+    SCOPED_TRACE(name);
+    const fs::path one = dir_ / (name + "_1"), two = dir_ / (name + "_2");
+    const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
+    const auto r1 = orogen_cli("run --out '" + one.string() + "' --threads 1 " + args + quiet, dir_, env);
+    ASSERT_EQ(r1.status, 0) << r1.err;
+    const auto r2 = orogen_cli("run --out '" + two.string() + "' --threads 2 " + args + quiet, dir_, env);
+    ASSERT_EQ(r2.status, 0) << r2.err;
+    EXPECT_GE(outputs_in(one), 3);
+    expect_same_snapshots(one / "snapshots.h5", two / "snapshots.h5");
+    for (const char* f : {"series.csv", "summary.csv", "removals.csv", "checkpoint.bin"})
+      if (fs::exists(one / f) || fs::exists(two / f)) expect_same_bytes(one / f, two / f);
+  }
+  const auto bad = orogen_cli("run --out '" + (dir_ / "bad").string() + "' " + kTiny, dir_,
+                              "OROGEN_MIN_PARALLEL_ITEMS=lots ");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("OROGEN_MIN_PARALLEL_ITEMS = 'lots'"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));
 }
 
 TEST_F(Cli, ResumeAfterKillIsBitwiseIdentical) {

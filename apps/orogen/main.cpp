@@ -8,6 +8,7 @@
 #include "run/render_command.hpp"
 #include "run/runner.hpp"
 #include "run/sweep_command.hpp"
+#include "util/parallel.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"Orogen: a discrete element model of orogenesis (Naylor 2004)"};
@@ -68,6 +69,10 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (const std::string error = orogen::parallel_environment_error(); !error.empty()) {
+    std::cerr << "error: " << error << "\n";
+    return 2;
   }
   if (*config_cmd) {
     std::cout << (markdown ? orogen::reference_markdown() : orogen::Config::load(std::nullopt, {}).to_toml());

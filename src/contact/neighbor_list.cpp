@@ -140,7 +140,7 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
   };
   std::vector<ChunkPairs> found(static_cast<std::size_t>(chunks));
   const std::int64_t neighbours[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};  // (du, dv)
-#pragma omp parallel for schedule(dynamic, 1) if (static_cast<std::ptrdiff_t>(n) > kMinParallelItems)
+#pragma omp parallel for schedule(dynamic, 1) if (static_cast<std::ptrdiff_t>(n) > min_parallel_items())
   for (std::int64_t k = 0; k < chunks; ++k) {
     ChunkPairs& out = found[static_cast<std::size_t>(k)];
     auto consider = [&](std::uint32_t a, std::uint32_t b) {
@@ -208,7 +208,7 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
   for (std::size_t w = 0; w < walls.size(); ++w) {
     if (!walls[w].enabled) continue;
     const auto count = static_cast<std::ptrdiff_t>(n);
-#pragma omp parallel for schedule(static) if (count > kMinParallelItems)
+#pragma omp parallel for schedule(static) if (count > min_parallel_items())
     for (std::ptrdiff_t i = 0; i < count; ++i) {
       double cx, cy;
       const double dist2 = closest_point_on_segment(walls[w], d.x[i], d.y[i], cx, cy);

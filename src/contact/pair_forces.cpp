@@ -62,7 +62,7 @@ void compute_pair_forces(NeighborList& L, const Discs& discs, const ContactLaw& 
   DiscForce* force = s.forces.data();
   const auto n = static_cast<std::ptrdiff_t>(s.forces.size());
   const auto chunks = static_cast<std::ptrdiff_t>(L.chunk_start.size()) - 1;
-  const bool parallel = n >= kMinParallelItems && omp_get_max_threads() > 1;
+  const bool parallel = n >= min_parallel_items() && omp_get_max_threads() > 1;
   // One thread team for the stage: clear, even chunks, odd chunks.
 #pragma omp parallel if (parallel)
   {

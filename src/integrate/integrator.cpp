@@ -12,7 +12,7 @@ namespace orogen {
 
 void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* f) {
   const auto n = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel for schedule(static) if (n > kMinParallelItems)
+#pragma omp parallel for schedule(static) if (n > min_parallel_items())
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     double fx = 0, fy = 0, tq = 0;
     for (const auto i : c.members[k]) {  // ascending disc-id order: a fixed summation order
@@ -82,7 +82,7 @@ double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce&
   const double damp = 1.0 - g.drag * dt;
   double max2 = 0;
   std::int64_t not_finite = 0;
-#pragma omp parallel reduction(max : max2) reduction(+ : not_finite) if (n > kMinParallelItems)
+#pragma omp parallel reduction(max : max2) reduction(+ : not_finite) if (n > min_parallel_items())
   {
     // A static split of the discs over the threads (a max and a count do not depend on it).
     const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
@@ -98,7 +98,7 @@ double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce&
   if (c.size() == 0) return moved;
   gather_cluster_forces(c, d, force);
   const auto nc = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel for schedule(static) if (nc > kMinParallelItems)
+#pragma omp parallel for schedule(static) if (nc > min_parallel_items())
   for (std::ptrdiff_t k = 0; k < nc; ++k) {
     if (c.motion[k] == static_cast<std::uint8_t>(Motion::Dynamic)) {
       c.vx[k] = damp * c.vx[k] + (c.fx[k] * c.inv_mass[k] + g.gx) * dt;

@@ -68,7 +68,7 @@ void relink_clusters(Clusters& c, Discs& d) {
 double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, const double* y_ref) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.size());
   double max2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max2) if (n > kMinParallelItems)
+#pragma omp parallel for schedule(static) reduction(max : max2) if (n > min_parallel_items())
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const double cs = std::cos(c.theta[k]), sn = std::sin(c.theta[k]);
     for (const auto i : c.members[k]) {

@@ -2,9 +2,19 @@
 // Below this many discs (or items) a loop runs on one thread: waking a thread team then costs
 // more than it saves, and on a busy machine a spinning team can be many times slower than one
 // thread. Results do not depend on it (every parallel loop is order-free or sums in a fixed
-// order).
+// order), which the determinism tests check by lowering it.
 #include <cstddef>
+#include <string>
 
 namespace orogen {
 constexpr std::ptrdiff_t kMinParallelItems = 16384;
+
+// kMinParallelItems, or the environment variable OROGEN_MIN_PARALLEL_ITEMS (a whole number
+// >= 1) when set: the tests lower it to take the parallel paths on small runs.
+std::ptrdiff_t min_parallel_items();
+
+// What is wrong with OROGEN_MIN_PARALLEL_ITEMS (naming the value and what is allowed), or ""
+// when it is unset or valid. The program checks it at start; min_parallel_items() falls
+// back to kMinParallelItems for a bad value.
+std::string parallel_environment_error();
 }  // namespace orogen

@@ -1,0 +1,31 @@
+#include "util/parallel.hpp"
+
+#include <cstdlib>
+#include <optional>
+
+namespace orogen {
+namespace {
+const char* kVariable = "OROGEN_MIN_PARALLEL_ITEMS";
+
+// The variable's value; nullopt when it is set but not a whole number >= 1.
+std::optional<std::ptrdiff_t> read_min_parallel_items() {
+  const char* text = std::getenv(kVariable);
+  if (text == nullptr || *text == '\0') return kMinParallelItems;
+  char* end = nullptr;
+  const long long v = std::strtoll(text, &end, 10);
+  if (*end != '\0' || v < 1) return std::nullopt;
+  return static_cast<std::ptrdiff_t>(v);
+}
+}  // namespace
+
+std::ptrdiff_t min_parallel_items() {
+  static const std::ptrdiff_t value = read_min_parallel_items().value_or(kMinParallelItems);
+  return value;
+}
+
+std::string parallel_environment_error() {
+  if (read_min_parallel_items()) return "";
+  return std::string("environment variable ") + kVariable + " = '" + std::getenv(kVariable) +
+         "': must be a whole number >= 1 (unset: " + std::to_string(kMinParallelItems) + ")";
+}
+}  // namespace orogen
