@@ -256,7 +256,7 @@ TEST(SweepPlan, EveryExampleSweepLoads) {
     if (e.path().extension() != ".toml") continue;
     SCOPED_TRACE(e.path().string());
     try {
-      EXPECT_GE(orogen::load_sweep(e.path()).runs.size(), 4u);
+      EXPECT_GE(orogen::load_sweep(e.path()).runs.size(), 2u);  // a matrix, not a single run
     } catch (const std::exception& err) {
       ADD_FAILURE() << err.what();
     }

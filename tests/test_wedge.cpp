@@ -274,9 +274,10 @@ TEST(Wedge, BothBasalConditionsCarryTheLayerAtThePlateSpeed) {
 // A wedge grows over the S-point. In layers of 5-8 discs the model does not localise there
 // (the pro layer stalls on its base and thickens throughout), so this runs the default wedge at
 // h0 = 10 d (the main job's resolution) to S = 2, with soft contacts (k_n = 2000) and a doubled
-// speed to keep it to seconds (eq. 4.3 still holds). Measured (seed 1): H 0.51 h0, peak at
-// -1.4 h0, fronts at -5.7 and +2.0 h0 (from -1.9 and -0.3 at their first appearance), highest
-// disc outside the fronts 10.1 d above the base.
+// speed to keep it to seconds (eq. 4.3 still holds). The wedge is young at S = 2 and two
+// realisations differ a lot (seed 1 before and after a change of the rotation update: H 0.51
+// and 0.37 h0, peak at -1.4 and -2.0 h0, fronts -5.7/+2.0 and -4.7/+1.8 h0, 1.7 and 0.35 h0
+// apart when they first appeared), so the bounds below are what both show with room to spare.
 TEST(Wedge, RisesAboveTheSPointWithDivergingFronts) {
   constexpr double h0 = 10;
   WedgeRun r({"layer.thickness=10", "wedge.tile_length=8", "wedge.retro_length=8", "wedge.initial_active=12",
@@ -291,11 +292,14 @@ TEST(Wedge, RisesAboveTheSPointWithDivergingFronts) {
     }
   ASSERT_GE(rows.size(), 19u);
   const auto& last = rows.back();
-  // A wedge of some height stands over the S-point; its peak oscillates about it.
-  EXPECT_GT(r.col(last, "H"), 0.35);
-  EXPECT_LT(std::fabs(r.col(last, "T")), 2.5);
+  // A wedge of some height stands over the S-point, its peak near it and between the fronts,
+  // one front on each side.
+  EXPECT_GT(r.col(last, "H"), 0.25);
+  EXPECT_LT(std::fabs(r.col(last, "T")), 3.0);
   EXPECT_LT(r.col(last, "Dp"), r.col(last, "T"));
   EXPECT_GT(r.col(last, "Dr"), r.col(last, "T"));
+  EXPECT_LT(r.col(last, "Dp"), -1.5);
+  EXPECT_GT(r.col(last, "Dr"), 0.5);
   // Away from it the layer is undeformed: nothing above h0 + d_max beyond 1.5 h0 of the fronts.
   std::size_t outside = 0;
   for (std::size_t i = 0; i < r.w.discs.size(); ++i) {
@@ -306,12 +310,13 @@ TEST(Wedge, RisesAboveTheSPointWithDivergingFronts) {
     }
   }
   EXPECT_GT(outside, 1000u);
-  // The fronts move apart as the wedge grows.
+  // The fronts move apart as the wedge grows: from their first appearance to the end the
+  // deformed zone widens by several h0 (measured 6.0 and 6.2).
   std::size_t first = 0;
   while (first < rows.size() && r.col(rows[first], "Dp") == r.col(rows[first], "Dr")) ++first;
   ASSERT_LT(first + 2, rows.size());
-  EXPECT_LT(r.col(last, "Dp"), r.col(rows[first], "Dp") - 1.0);
-  EXPECT_GT(r.col(last, "Dr"), r.col(rows[first], "Dr") + 1.0);
+  const auto width = [&](const std::vector<double>& row) { return r.col(row, "Dr") - r.col(row, "Dp"); };
+  EXPECT_GT(width(last), width(rows[first]) + 3.0);
 }
 
 }  // namespace

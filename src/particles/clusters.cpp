@@ -37,6 +37,7 @@ std::size_t make_cluster(Clusters& c, Discs& d, std::span<const std::size_t> idx
   }
   c.x.push_back(cx); c.y.push_back(cy); c.theta.push_back(0);
   c.vx.push_back(vx); c.vy.push_back(vy); c.omega.push_back(0);
+  c.rot_c.push_back(1); c.rot_s.push_back(0);
   c.fx.push_back(0); c.fy.push_back(0); c.torque.push_back(0);
   c.mass.push_back(m); c.inv_mass.push_back(1.0 / m); c.inv_inertia.push_back(1.0 / inertia);
   c.id.push_back(cluster_id);
@@ -70,7 +71,7 @@ double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, co
   double max2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max2) if (n > min_parallel_items())
   for (std::ptrdiff_t k = 0; k < n; ++k) {
-    const double cs = std::cos(c.theta[k]), sn = std::sin(c.theta[k]);
+    const double cs = c.rot_c[k], sn = c.rot_s[k];
     for (const auto i : c.members[k]) {
       if (i < 0) break;
       const double rx = cs * d.body_dx[i] - sn * d.body_dy[i];

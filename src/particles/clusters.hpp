@@ -17,6 +17,9 @@ constexpr int kMaxClusterSize = 3;
 
 struct Clusters {
   std::vector<double> x, y, theta, vx, vy, omega;  // centre of mass pose and velocity
+  // cos and sin of the pose's rotation, advanced with theta by a small rotation each step (no
+  // trigonometry in the time step); they place the member discs, theta is what is reported.
+  std::vector<double> rot_c, rot_s;
   std::vector<double> fx, fy, torque;
   std::vector<double> mass, inv_mass, inv_inertia;
   std::vector<std::int64_t> id;
@@ -29,6 +32,7 @@ struct Clusters {
   template <class F>
   void for_each_array(F&& f) {
     f("x", x); f("y", y); f("theta", theta); f("vx", vx); f("vy", vy); f("omega", omega);
+    f("rot_c", rot_c); f("rot_s", rot_s);
     f("fx", fx); f("fy", fy); f("torque", torque);
     f("mass", mass); f("inv_mass", inv_mass); f("inv_inertia", inv_inertia);
     f("id", id); f("motion", motion); f("members", members);
