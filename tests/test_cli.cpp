@@ -478,7 +478,7 @@ TEST_F(Cli, WedgeStartsFromAPackingFileAndRefusesAWrongOne) {
 TEST_F(Cli, WedgeResumeAfterKillIsBitwiseIdentical) {
   // Inflow (a tile stamped after the kill), erosion and per-output fields all cross the resume.
   const std::string small =
-      " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
+      " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.window=3"
       " --set wedge.s_end=0.3 --set wedge.outputs=6 --set wedge.erosion_height=0.9 --set output.checkpoint_every=2"
       " --set output.progress=never --set output.vtp=false --threads 1";
   const fs::path a = dir_ / "whole", b = dir_ / "killed";

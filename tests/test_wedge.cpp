@@ -116,10 +116,11 @@ TEST(Wedge, ErosionRemovesExactlyTheParticlesAboveTheThreshold) {
 }
 
 TEST(Wedge, MassIsConservedWithInflowAndErosion) {
-  // initial_active = 4 puts the leftmost stamped tile right at the feeding threshold, so a new
-  // tile is stamped within the first few hundredths of a disc of convergence; erosion at 0.75 h0
-  // skims the layer top and every stamped tile.
-  WedgeRun r({"wedge.initial_active=4", "wedge.erosion_height=0.75", "wedge.erosion_every=50", "wedge.s_end=0.2",
+  // initial_active = 4 (with a window of 3 h0, which would otherwise reach further) puts the
+  // leftmost stamped tile right at the feeding threshold, so a new tile is stamped within the
+  // first few hundredths of a disc of convergence; erosion at 0.75 h0 skims the layer top and
+  // every stamped tile.
+  WedgeRun r({"wedge.initial_active=4", "wedge.window=3", "wedge.erosion_height=0.75", "wedge.erosion_every=50", "wedge.s_end=0.2",
               "wedge.outputs=8"});
   World& w = r.w;
   const double interval = *r.exp->output_interval();

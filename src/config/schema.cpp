@@ -108,7 +108,7 @@ const std::vector<KeySpec>& schema() {
            "over a step so that any value is stable [m sqrt(g/d)]"),
       real("wedge.s_end", 8.0, gt(0), none, "run until this normalised convergence S = v t / h0 [-]"),
       integer("wedge.outputs", 100, ge(1), "output steps over the run"),
-      real("wedge.window", 3.0, gt(0), none,
+      real("wedge.window", 6.0, gt(0), none,
            "the active region reaches this far beyond each deformation front [h0]"),
       real("wedge.initial_active", 12.0, gt(0), none,
            "pro-side length of the active region before any front forms: long enough for basal "

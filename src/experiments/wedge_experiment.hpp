@@ -25,7 +25,7 @@ struct WedgeSpec {
   double gamma_b = 1e4;        // traction drag coefficient (m g / sqrt(g d))
   double s_end = 8;            // run until this normalised convergence S
   int outputs = 100;           // output steps over the run
-  double window = 3;           // active region reaches this many h0 beyond each front
+  double window = 6;           // active region reaches this many h0 beyond each front
   double initial_active = 12;  // pro-side active length before any front forms (h0)
   double retro_length = 8;     // retro-side layer length (h0)
   double tile_length = 8;      // length of the settled tile (h0)
