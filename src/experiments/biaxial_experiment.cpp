@@ -1,4 +1,5 @@
 #include "experiments/biaxial_experiment.hpp"
+#include "util/units.hpp"
 
 #include <fmt/format.h>
 
@@ -17,8 +18,6 @@
 namespace orogen {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
-constexpr double kUnitMass = std::numbers::pi / 4.0;  // disc of diameter 1: stresses are reported in m g / d^2
 constexpr std::uint64_t kCheckEvery = 200;            // steps per consolidation check window
 constexpr double kTaperBases[] = {0.1, 0.2, 0.3};     // basal friction coefficients of the summary tapers
 
@@ -34,7 +33,7 @@ double sample_height(const World& w) {
 }
 
 double mean_kinetic_energy(const World& w) {
-  return w.discs.size() ? w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitMass : 0.0;
+  return w.discs.size() ? w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitDiscMass : 0.0;
 }
 
 double solid_area(const Discs& d) {
@@ -69,7 +68,7 @@ void BiaxialExperiment::setup(World& w) {
   w.walls = {bottom, upper, left, right};
   w.invalidate_neighbors();
 
-  sigma3_code_ = spec_.sigma3 * kUnitMass;
+  sigma3_code_ = spec_.sigma3 * kUnitDiscMass;
   phase_ = Consolidating;
   latest_ = output_sum_ = check_sum_ = {};
   output_steps_ = check_steps_ = 0;
@@ -166,8 +165,8 @@ BiaxialRow BiaxialExperiment::row(const World& w) const {
   BiaxialRow r;
   // Top and bottom (and the two sides) differ only by the sample's acceleration; their mean
   // cancels it to first order.
-  r.sigma1 = 0.5 * (s[kTop] + s[kBottom]) / kUnitMass;
-  r.sigma3 = 0.5 * (s[kLeft] + s[kRight]) / kUnitMass;
+  r.sigma1 = 0.5 * (s[kTop] + s[kBottom]) / kUnitDiscMass;
+  r.sigma3 = 0.5 * (s[kLeft] + s[kRight]) / kUnitDiscMass;
   if (phase_ != Consolidating) {
     r.axial_strain = axial_strain(w);
     r.vol_strain = sample_width(w) * sample_height(w) / a0_ - 1.0;
@@ -199,7 +198,7 @@ std::vector<double> BiaxialExperiment::measure(const World& w) const {
   const BiaxialRow r = row(w);
   const double phi = mobilised_friction(r.sigma1, r.sigma3);
   return {static_cast<double>(w.step), w.time, static_cast<double>(phase_), r.axial_strain, r.vol_strain,
-          sample_width(w), sample_height(w), r.sigma1, r.sigma3, phi * kDeg, std::tan(phi),
+          sample_width(w), sample_height(w), r.sigma1, r.sigma3, phi * kDegPerRad, std::tan(phi),
           measure_contacts(w).contacts_per_disc, mean_kinetic_energy(w), static_cast<double>(w.discs.size())};
 }
 
@@ -223,19 +222,19 @@ std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
   int n = 0;
   for (const auto& row : rows_)
     if (row.axial_strain >= spec_.residual_from * spec_.strain_end) { p += 0.5 * (row.sigma1 + row.sigma3); ++n; }
-  p = n ? p / n * kUnitMass : std::numeric_limits<double>::quiet_NaN();
+  p = n ? p / n * kUnitDiscMass : std::numeric_limits<double>::quiet_NaN();
   const double inertial = 2 * spec_.strain_rate * 2 * mean_radius(w.discs) / std::sqrt(p);
   std::vector<SummaryValue> out = {
-      {"phi_peak_deg", "peak mobilised friction angle [deg]", r.phi_peak * kDeg},
+      {"phi_peak_deg", "peak mobilised friction angle [deg]", r.phi_peak * kDegPerRad},
       {"axial_strain_peak", "axial strain at the peak [-]", r.strain_at_peak},
       {"phi_residual_deg",
        fmt::format("mean mobilised friction angle beyond axial strain {:.4g} (residual state) [deg]",
                    spec_.residual_from * spec_.strain_end),
-       r.phi_residual * kDeg},
+       r.phi_residual * kDegPerRad},
       {"mu_bulk_peak", "tan(phi_peak): peak bulk friction coefficient [-]", std::tan(r.phi_peak)},
       {"mu_bulk_residual", "tan(phi_residual): residual bulk friction coefficient [-]", std::tan(r.phi_residual)},
       {"dilatancy_peak", "d vol_strain / d axial_strain at the peak (positive: dilating) [-]", r.dilatancy_peak},
-      {"psi_peak_deg", "dilatancy angle at the peak, asin(D / (2 + D)) [deg]", r.psi_peak * kDeg},
+      {"psi_peak_deg", "dilatancy angle at the peak, asin(D / (2 + D)) [deg]", r.psi_peak * kDegPerRad},
       {"vol_strain_end", "area change at the end, (A - A0) / A0 [-]", rows_.back().vol_strain},
       {"sigma3", "target confining stress [m g / d^2]", spec_.sigma3},
       {"sigma3_mean", "mean measured confining stress while shearing [m g / d^2]", r.sigma3_mean},
@@ -255,7 +254,7 @@ std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
                      fmt::format("critical surface slope for basal friction {} and the {} bulk friction (NaN: "
                                  "none, the base is not weaker) [deg]",
                                  mu_b, name),
-                     critical_taper_or_nan(phi, mu_b) * kDeg});
+                     critical_taper_or_nan(phi, mu_b) * kDegPerRad});
   return out;
 }
 
@@ -316,12 +315,12 @@ void BiaxialExperiment::load(const ArchiveReader& in) {
 
 std::string BiaxialExperiment::status(const World& w) const {
   const auto s = latest_;
-  const double s3 = 0.5 * (s[kLeft] + s[kRight]) / kUnitMass;
+  const double s3 = 0.5 * (s[kLeft] + s[kRight]) / kUnitDiscMass;
   if (phase_ == Consolidating)
     return fmt::format("consolidating sigma3 {:.3g} KE/disc {:.2e}", s3, mean_kinetic_energy(w));
-  const double s1 = 0.5 * (s[kTop] + s[kBottom]) / kUnitMass;
+  const double s1 = 0.5 * (s[kTop] + s[kBottom]) / kUnitDiscMass;
   return fmt::format("shearing strain {:.4f} phi {:.1f} deg sigma3 {:.3g}", axial_strain(w),
-                     mobilised_friction(s1, s3) * kDeg, s3);
+                     mobilised_friction(s1, s3) * kDegPerRad, s3);
 }
 
 double BiaxialExperiment::fraction_done(const World& w) const {
@@ -346,7 +345,7 @@ std::unique_ptr<Experiment> make_biaxial_experiment(const Config& c) {
   s.settle = settle_spec(c);
   // Quasi-static: inertial number below 1e-2 even at the lowest mean stress, sigma3, for the
   // largest discs (MODEL's bulk friction is the rate-independent limit).
-  const double inertial = 2 * s.strain_rate * s.packing.d_max / std::sqrt(s.sigma3 * kUnitMass);
+  const double inertial = 2 * s.strain_rate * s.packing.d_max / std::sqrt(s.sigma3 * kUnitDiscMass);
   if (inertial > 1e-2)
     throw config_error(c.source_of("biaxial.strain_rate"), "biaxial.strain_rate", fmt::format("{}", s.strain_rate),
                        fmt::format("a quasi-static rate: inertial number 2 rate d sqrt(rho / sigma3) = {:.3g} is above "

@@ -1,4 +1,5 @@
 #include "experiments/packing_experiment.hpp"
+#include "util/units.hpp"
 
 #include <fmt/format.h>
 
@@ -14,7 +15,6 @@ namespace orogen {
 
 namespace {
 // Mass of a disc of diameter 1: the unit of mass (MODEL §1).
-constexpr double kUnitMass = std::numbers::pi / 4.0;
 }  // namespace
 
 void PackingExperiment::setup(World& w) {
@@ -27,7 +27,7 @@ void PackingExperiment::setup(World& w) {
 
 double PackingExperiment::mean_kinetic_energy(const World& w) const {
   if (w.discs.size() == 0) return 0;
-  return w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitMass;
+  return w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitDiscMass;
 }
 
 bool PackingExperiment::advance(World& w) {

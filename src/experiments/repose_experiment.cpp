@@ -1,4 +1,5 @@
 #include "experiments/repose_experiment.hpp"
+#include "util/units.hpp"
 
 #include <fmt/format.h>
 
@@ -17,9 +18,7 @@
 namespace orogen {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
-constexpr double kUnitMass = std::numbers::pi / 4.0;  // disc of diameter 1
-constexpr std::uint64_t kCheckEvery = 100;            // steps between removal and rest checks
+constexpr std::uint64_t kCheckEvery = 100;  // steps between removal and rest checks
 
 }  // namespace
 
@@ -56,7 +55,7 @@ void ReposeExperiment::setup(World& w) {
 
 double ReposeExperiment::mean_kinetic_energy(const World& w) const {
   if (w.discs.size() == 0) return 0;
-  return w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitMass;
+  return w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitDiscMass;
 }
 
 // Particles that crossed the open side (or fell below the floor's end) leave the system.
@@ -120,8 +119,8 @@ std::vector<double> ReposeExperiment::measure(const World& w) const {
   const auto n = static_cast<std::int64_t>(w.discs.size());
   return {static_cast<double>(w.step), w.time, static_cast<double>(n), static_cast<double>(initial_discs_ - n),
           mean_kinetic_energy(w), stats.contacts_per_disc,
-          f.valid() ? -std::atan(f.slope) * kDeg : nan, f.valid() ? f.r2 : nan, f.valid() ? f.rms : nan,
-          f.valid() ? f.concavity * kDeg : nan, f.valid() ? f.x_lo : nan, f.valid() ? f.x_hi : nan,
+          f.valid() ? -std::atan(f.slope) * kDegPerRad : nan, f.valid() ? f.r2 : nan, f.valid() ? f.rms : nan,
+          f.valid() ? f.concavity * kDegPerRad : nan, f.valid() ? f.x_lo : nan, f.valid() ? f.x_hi : nan,
           static_cast<double>(f.n)};
 }
 
@@ -130,11 +129,11 @@ std::vector<SummaryValue> ReposeExperiment::summary(const World& w) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto n = static_cast<double>(w.discs.size());
   return {{"angle_deg", "angle of repose: slope of the straight-line fit of the surface at rest [deg]",
-           f.valid() ? -std::atan(f.slope) * kDeg : nan},
+           f.valid() ? -std::atan(f.slope) * kDegPerRad : nan},
           {"angle_r2", "coefficient of determination of that line", f.valid() ? f.r2 : nan},
           {"angle_rms", "root-mean-square residual of that line [d]", f.valid() ? f.rms : nan},
           {"concavity_deg", "slope at the top minus slope at the foot of a quadratic fit; > 0 concave [deg]",
-           f.valid() ? f.concavity * kDeg : nan},
+           f.valid() ? f.concavity * kDegPerRad : nan},
           {"slope_length", "horizontal extent of the fitted slope [d]", f.valid() ? f.x_hi - f.x_lo : nan},
           {"removed_fraction", "fraction of the discs that left the box", 1.0 - n / static_cast<double>(initial_discs_)},
           {"at_rest", "1 if the material came to rest, 0 if repose.max_time ended the run", at_rest_ ? 1.0 : 0.0},

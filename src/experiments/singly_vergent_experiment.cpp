@@ -1,4 +1,5 @@
 #include "experiments/singly_vergent_experiment.hpp"
+#include "util/units.hpp"
 
 #include <fmt/format.h>
 
@@ -14,7 +15,6 @@
 namespace orogen {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::uint64_t kHousekeepingEvery = 100;
 constexpr std::size_t kMaxGap = 2;  // surface columns below the raised level inside the wedge
@@ -120,8 +120,8 @@ std::vector<double> SinglyVergentExperiment::measure(const World& w) const {
   const double h0 = spec_.h0;
   auto or_nan = [&](double v) { return g.has_wedge ? v : kNaN; };
   return {static_cast<double>(w.step), w.time, shortening(w), g.backstop / h0, or_nan(g.front / h0),
-          or_nan((g.backstop - g.front) / h0), or_nan(g.height / h0), or_nan(g.taper * kDeg),
-          or_nan(g.taper_front * kDeg), or_nan(g.taper_back * kDeg), or_nan(g.taper_mean * kDeg),
+          or_nan((g.backstop - g.front) / h0), or_nan(g.height / h0), or_nan(g.taper * kDegPerRad),
+          or_nan(g.taper_front * kDegPerRad), or_nan(g.taper_back * kDegPerRad), or_nan(g.taper_mean * kDegPerRad),
           touching > 0 ? limit / touching : 0.0, static_cast<double>(w.discs.size())};
 }
 
@@ -133,7 +133,7 @@ void SinglyVergentExperiment::after_output(const World& w) {
   displacements_.remember(w);
   const SinglyVergentShape g = shape(w);
   history_s_.push_back(shortening(w));
-  history_taper_.push_back(g.has_wedge ? g.taper * kDeg : kNaN);
+  history_taper_.push_back(g.has_wedge ? g.taper * kDegPerRad : kNaN);
 }
 
 std::vector<SummaryValue> SinglyVergentExperiment::summary(const World& w) const {
@@ -152,11 +152,11 @@ std::vector<SummaryValue> SinglyVergentExperiment::summary(const World& w) const
   auto or_nan = [&](double v) { return g.has_wedge ? v : kNaN; };
   return {{"taper_steady_deg", "mean wedge taper over the outputs after singly.steady_from of the run [deg]", mean},
           {"taper_steady_sd_deg", "standard deviation of the taper over those outputs [deg]", sd},
-          {"taper_final_deg", "wedge taper at the end [deg]", or_nan(g.taper * kDeg)},
+          {"taper_final_deg", "wedge taper at the end [deg]", or_nan(g.taper * kDegPerRad)},
           {"taper_front_final_deg", "surface slope over the front half of the wedge at the end [deg]",
-           or_nan(g.taper_front * kDeg)},
+           or_nan(g.taper_front * kDegPerRad)},
           {"taper_back_final_deg", "surface slope over the back half (at the backstop) at the end [deg]",
-           or_nan(g.taper_back * kDeg)},
+           or_nan(g.taper_back * kDegPerRad)},
           {"width_final", "wedge width at the end [h0]", or_nan((g.backstop - g.front) / spec_.h0)},
           {"height_final", "wedge height at the end [h0]", or_nan(g.height / spec_.h0)},
           {"shortening", "backstop displacement at the end [h0]", shortening(w)}};
@@ -179,7 +179,7 @@ void SinglyVergentExperiment::load(const ArchiveReader& in) {
 std::string SinglyVergentExperiment::status(const World& w) const {
   const SinglyVergentShape g = shape(w);
   return fmt::format("shortening {:.2f}/{:.1f} h0, taper {:.1f} deg", shortening(w), spec_.shortening,
-                     g.has_wedge ? g.taper * kDeg : 0.0);
+                     g.has_wedge ? g.taper * kDegPerRad : 0.0);
 }
 
 std::array<double, 4> SinglyVergentExperiment::view_box(const World&) const {

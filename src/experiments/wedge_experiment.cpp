@@ -1,4 +1,5 @@
 #include "experiments/wedge_experiment.hpp"
+#include "util/units.hpp"
 
 #include <fmt/format.h>
 
@@ -13,7 +14,6 @@ namespace orogen {
 namespace {
 
 constexpr int kHousekeepingEvery = 100;  // steps between window, pinning and stray checks
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 enum WallIndex : std::size_t { kProBase = 0, kRetroBase = 1, kRetroEnd = 2 };
 
@@ -231,7 +231,7 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
   }
   const double h0 = spec_.h0;
   return {static_cast<double>(w.step), w.time, convergence(w), g.h / h0, g.dp / h0, g.mp / h0, g.dr / h0, g.mr / h0,
-          g.x_peak / h0, g.alpha * kDeg, g.beta * kDeg, g.alpha_fit * kDeg, g.beta_fit * kDeg,
+          g.x_peak / h0, g.alpha * kDegPerRad, g.beta * kDegPerRad, g.alpha_fit * kDegPerRad, g.beta_fit * kDegPerRad,
           touching[0] > 0 ? limit[0] / touching[0] : 0.0, touching[1] > 0 ? limit[1] / touching[1] : 0.0,
           static_cast<double>(active), static_cast<double>(w.discs.size()), static_cast<double>(eroded),
           static_cast<double>(left), static_cast<double>(entered_), window_pro_ / h0, window_retro_ / h0};

@@ -1,4 +1,5 @@
 #include "run/sweep_processes.hpp"
+#include "util/timestamp.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -13,18 +14,6 @@
 #include <stdexcept>
 
 namespace orogen {
-namespace {
-
-std::string timestamp() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  ::localtime_r(&now, &local);
-  char buf[32];
-  return std::string(buf, std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &local));
-}
-
-}  // namespace
-
 pid_t spawn_self(const std::vector<std::string>& args, const std::filesystem::path& log) {
   // Everything the child needs is prepared before fork: between fork and exec only
   // async-signal-safe calls are allowed.
@@ -38,7 +27,7 @@ pid_t spawn_self(const std::vector<std::string>& args, const std::filesystem::pa
   if (out < 0) throw std::runtime_error(fmt::format("cannot open {}: {}", log.string(), std::strerror(errno)));
   {
     // A header per attempt, so that the log of a resumed or retried run reads in order.
-    std::string header = "=== " + timestamp() + " orogen";
+    std::string header = "=== " + local_timestamp() + " orogen";
     for (const auto& a : args) header += " " + a;
     header += "\n";
     [[maybe_unused]] const auto n = ::write(out, header.data(), header.size());

@@ -1,4 +1,5 @@
 #include "run/sweep_report.hpp"
+#include "util/timestamp.hpp"
 
 #include <fmt/format.h>
 #include <sys/ioctl.h>
@@ -15,14 +16,6 @@ std::size_t terminal_width() {
   winsize w{};
   if (::ioctl(STDERR_FILENO, TIOCGWINSZ, &w) == 0 && w.ws_col > 10) return w.ws_col;
   return 100;
-}
-
-std::string timestamp() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  ::localtime_r(&now, &local);
-  char buf[32];
-  return std::string(buf, std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &local));
 }
 
 }  // namespace
@@ -43,7 +36,7 @@ void SweepReport::event(const std::string& line) {
   std::fprintf(stderr, "sweep: %s\n", line.c_str());
   std::fflush(stderr);
   // Reopened per line: events are few, and every line is on disk if the sweep is killed.
-  std::ofstream(log_file_, std::ios::app) << "[" << timestamp() << "] " << line << "\n";
+  std::ofstream(log_file_, std::ios::app) << "[" << local_timestamp() << "] " << line << "\n";
   // The progress line comes back with the next progress() call, up to date.
 }
 
