@@ -119,6 +119,7 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
   bin_discs(d, g, order, cell_start);
   if (sort) {
     d.permute(order);
+    order_clusters_by_discs(c, d);
     relink_clusters(c, d);
     for (std::size_t k = 0; k < n; ++k) order[k] = static_cast<std::uint32_t>(k);
   }

@@ -70,7 +70,7 @@ void WedgeExperiment::build_layer(World& w) {
   window_retro_ = x_end_ + 1.0;
   double left = x_end_ - L;
   while (true) {
-    stamp_tile(w, tile_, left);
+    stamp_tile(w, tile_, left, x_end_);  // nothing overlapping the end wall
     if (left <= window_pro_ - L) break;  // the next tile is stamped as soon as this one moves
     left -= L;
   }

@@ -100,8 +100,8 @@ Tile cut_tile(const Tile& whole, double x_lo, double length) {
 namespace {
 
 // Tile discs (by index) that would overlap a disc already in the world near the seams at
-// x_left and x_left + length; their whole groups are dropped.
-std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_left) {
+// x_left and x_left + length, or reach past x_max; their whole groups are dropped.
+std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_left, double x_max) {
   constexpr double kBand = 1.5;  // discs farther than this from a seam cannot touch across it
   std::vector<std::size_t> near;
   for (std::size_t i = 0; i < w.discs.size(); ++i) {
@@ -110,17 +110,20 @@ std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_
   }
   std::vector<std::uint8_t> drop(t.size(), 0);
   std::vector<std::uint8_t> drop_group;
+  auto drop_disc = [&](std::size_t k) {
+    drop[k] = 1;
+    if (t.group[k] < 0) return;
+    if (drop_group.size() <= static_cast<std::size_t>(t.group[k])) drop_group.resize(t.group[k] + 1, 0);
+    drop_group[static_cast<std::size_t>(t.group[k])] = 1;
+  };
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (t.x[k] > kBand && t.x[k] < t.length - kBand) continue;
     const double x = x_left + t.x[k];
+    if (x + t.radius[k] > x_max) { drop_disc(k); continue; }
     for (auto i : near) {
       const double dx = w.discs.x[i] - x, dy = w.discs.y[i] - t.y[k], r = w.discs.radius[i] + t.radius[k];
       if (dx * dx + dy * dy >= r * r) continue;
-      drop[k] = 1;
-      if (t.group[k] >= 0) {
-        if (drop_group.size() <= static_cast<std::size_t>(t.group[k])) drop_group.resize(t.group[k] + 1, 0);
-        drop_group[static_cast<std::size_t>(t.group[k])] = 1;
-      }
+      drop_disc(k);
       break;
     }
   }
@@ -131,8 +134,8 @@ std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_
 
 }  // namespace
 
-std::pair<std::size_t, std::size_t> stamp_tile(World& w, const Tile& t, double x_left) {
-  const auto drop = seam_overlaps(w, t, x_left);
+std::pair<std::size_t, std::size_t> stamp_tile(World& w, const Tile& t, double x_left, double x_max) {
+  const auto drop = seam_overlaps(w, t, x_left, x_max);
   const std::size_t first = w.discs.size();
   std::map<std::int32_t, std::vector<std::size_t>> members;
   for (std::size_t k = 0; k < t.size(); ++k) {

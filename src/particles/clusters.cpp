@@ -1,5 +1,6 @@
 #include "particles/clusters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include "util/parallel.hpp"
@@ -47,16 +48,35 @@ std::size_t make_cluster(Clusters& c, Discs& d, std::span<const std::size_t> idx
   return k;
 }
 
+void order_clusters_by_discs(Clusters& c, const Discs& d) {
+  std::vector<std::uint8_t> placed(c.size(), 0);
+  std::vector<std::uint32_t> order;
+  order.reserve(c.size());
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const auto k = d.cluster[i];
+    if (k < 0 || placed[static_cast<std::size_t>(k)]) continue;
+    placed[static_cast<std::size_t>(k)] = 1;
+    order.push_back(static_cast<std::uint32_t>(k));
+  }
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (!placed[k]) order.push_back(static_cast<std::uint32_t>(k));
+  permute_arrays(c, order);
+}
+
 void relink_clusters(Clusters& c, Discs& d) {
-  // Cluster index from stable cluster id: clusters are kept sorted by id.
+  // Cluster index by stable cluster id (the ids are dense: numbered from 0 as bodies are made).
+  std::int64_t max_id = -1;
+  for (auto id : c.id) max_id = std::max(max_id, id);
+  std::vector<std::int32_t> index_of(static_cast<std::size_t>(max_id + 1), -1);
+  for (std::size_t k = 0; k < c.size(); ++k) index_of[static_cast<std::size_t>(c.id[k])] = static_cast<std::int32_t>(k);
   for (auto& m : c.members) m = {-1, -1, -1};
   for (std::size_t i = 0; i < d.size(); ++i) {
-    if (d.cluster_id[i] < 0) { d.cluster[i] = kNoCluster; continue; }
-    auto it = std::lower_bound(c.id.begin(), c.id.end(), d.cluster_id[i]);
-    if (it == c.id.end() || *it != d.cluster_id[i]) throw std::logic_error("disc names a missing cluster");
-    const auto k = static_cast<std::size_t>(it - c.id.begin());
-    d.cluster[i] = static_cast<std::int32_t>(k);
-    auto& slot = c.members[k];
+    const auto id = d.cluster_id[i];
+    if (id < 0) { d.cluster[i] = kNoCluster; continue; }
+    const std::int32_t k = id <= max_id ? index_of[static_cast<std::size_t>(id)] : -1;
+    if (k < 0) throw std::logic_error("disc names a missing cluster");
+    d.cluster[i] = k;
+    auto& slot = c.members[static_cast<std::size_t>(k)];
     // Members in ascending disc-id order so that force sums have a fixed order.
     int n = 0;
     while (n < kMaxClusterSize && slot[n] >= 0) ++n;

@@ -47,6 +47,12 @@ struct Clusters {
 std::size_t make_cluster(Clusters& clusters, Discs& discs, std::span<const std::size_t> disc_indices,
                          std::int64_t cluster_id);
 
+// Re-orders the bodies in the order of their first disc in the disc arrays, so that after a
+// spatial sort of the discs the per-step body loops walk the discs almost in memory order
+// (and threads split the bodies where they split the discs). Discs::cluster must still hold
+// the bodies' current indices; call relink_clusters after.
+void order_clusters_by_discs(Clusters& clusters, const Discs& discs);
+
 // Rebuilds Clusters::members and Discs::cluster after discs were re-ordered or compacted.
 void relink_clusters(Clusters& clusters, Discs& discs);
 

@@ -19,13 +19,7 @@ std::size_t Discs::add(std::int64_t disc_id, double px, double py, double r) {
   return x.size() - 1;
 }
 
-void Discs::permute(std::span<const std::uint32_t> order) {
-  for_each_array([&](std::string_view, auto& v) {
-    std::remove_reference_t<decltype(v)> out(order.size());
-    for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
-    v.swap(out);
-  });
-}
+void Discs::permute(std::span<const std::uint32_t> order) { permute_arrays(*this, order); }
 
 void Discs::compact(std::span<const std::uint8_t> keep) { compact_arrays(*this, keep); }
 

@@ -115,8 +115,10 @@ class Run {
     state_.finished = true;
     checkpoint();
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    log().info("finished at step {} (t = {:.6g}) after {} steps in {:.1f} s ({:.3g} M particle-steps/s)", world_.step,
-               world_.time, world_.step - step0, secs, particle_steps / std::max(secs, 1e-9) / 1e6);
+    log().info("finished at step {} (t = {:.6g}) after {} steps in {:.1f} s ({:.3g} M particle-steps/s, {} neighbour "
+               "list builds in all)",
+               world_.step, world_.time, world_.step - step0, secs, particle_steps / std::max(secs, 1e-9) / 1e6,
+               world_.neighbors.builds);
   }
 
   World& world() { return world_; }

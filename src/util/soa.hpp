@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 namespace orogen {
 
@@ -14,6 +15,16 @@ void compact_arrays(SoA& soa, std::span<const std::uint8_t> keep) {
     for (std::size_t k = 0; k < v.size(); ++k)
       if (keep[k]) v[w++] = v[k];
     v.resize(w);
+  });
+}
+
+// Re-orders every array of the SoA: element k becomes the old element order[k].
+template <class SoA>
+void permute_arrays(SoA& soa, std::span<const std::uint32_t> order) {
+  soa.for_each_array([&](std::string_view, auto& v) {
+    std::remove_reference_t<decltype(v)> out(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
+    v.swap(out);
   });
 }
 
