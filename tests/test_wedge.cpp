@@ -72,7 +72,37 @@ TEST(Wedge, LayerStartsClearOfTheEndWallAndStaysQuiet) {
   for (int s = 0; s < 500; ++s) ASSERT_TRUE(r.exp->advance(r.w));
   double fastest = 0;
   for (std::size_t i = 0; i < w.discs.size(); ++i) fastest = std::max(fastest, std::hypot(w.discs.vx[i], w.discs.vy[i]));
-  EXPECT_LT(fastest, 0.3);  // the plate moves at 0.025; a blasted particle at several sqrt(g d)
+  // The plate moves at 0.025 and a surface cluster that tumbles off its perch reaches ~0.3; a
+  // particle blasted out of the wall moved at 2.6 here (15 at h0 = 20).
+  EXPECT_LT(fastest, 1.0);
+}
+
+// The far retro-side layer rests kinematically beyond the retro window (initially as far as
+// the pro side's initial stretch) and joins in once the retro front comes within the window.
+TEST(Wedge, FarRetroLayerRestsUntilTheRetroFrontApproaches) {
+  WedgeRun r({"wedge.retro_length=10", "wedge.initial_active=3", "wedge.window=3", "wedge.s_end=1"});
+  World& w = r.w;
+  const double edge = 3 * kH0;
+  int far = 0, near = 0;
+  for (std::size_t i = 0; i < w.discs.size(); ++i) {
+    const double x = w.discs.cluster[i] >= 0 ? w.clusters.x[static_cast<std::size_t>(w.discs.cluster[i])] : w.discs.x[i];
+    if (x > edge + 0.01) {
+      ++far;
+      EXPECT_FALSE(w.discs.is_dynamic(i));
+      EXPECT_EQ(w.discs.vx[i], 0.0);
+    } else if (x > 0 && x < edge - 0.01) {
+      ++near;
+      EXPECT_TRUE(w.discs.is_dynamic(i));
+    }
+  }
+  EXPECT_GT(far, 200);  // 7 h0 of layer at rest, 3 h0 dynamic (about 110 discs)
+  EXPECT_GT(near, 50);
+  EXPECT_DOUBLE_EQ(r.measured("window_retro"), 3.0);
+  // A disc raised above the layer at 1 h0 behind the S-point marks a retro front there: the
+  // window moves to 1 + 3 h0 at the next update.
+  w.add_disc(1 * kH0, 1.5 * kH0, 0.4);
+  for (int s = 0; s < 100; ++s) ASSERT_TRUE(r.exp->advance(w));
+  EXPECT_NEAR(r.measured("window_retro"), 4.0, 0.05);
 }
 
 TEST(Wedge, ErosionRemovesExactlyTheParticlesAboveTheThreshold) {
@@ -105,7 +135,9 @@ TEST(Wedge, ErosionRemovesExactlyTheParticlesAboveTheThreshold) {
     ASSERT_GT(w.clusters.y[k], limit);
     low_mean = {w.discs.id[a], w.discs.id[b], w.discs.id[c]};
   }
+  const auto ids_before_step = w.next_disc_id;
   ASSERT_TRUE(r.exp->advance(w));
+  const auto stamped = static_cast<std::size_t>(w.next_disc_id - ids_before_step);  // inflow, if any
 
   std::set<std::int64_t> expected = {above};
   expected.insert(high_mean.begin(), high_mean.end());
@@ -124,7 +156,7 @@ TEST(Wedge, ErosionRemovesExactlyTheParticlesAboveTheThreshold) {
       EXPECT_EQ(rec.cluster_id, -1);
     }
   // Everything else is still there.
-  EXPECT_EQ(w.discs.size(), n0 + 8 - 4);
+  EXPECT_EQ(w.discs.size(), n0 + 8 - 4 + stamped);
   EXPECT_LT(index_of_id(w.discs, below), w.discs.size());
   for (auto id : low_mean) EXPECT_LT(index_of_id(w.discs, id), w.discs.size());
   EXPECT_EQ(r.measured("n_eroded"), 4);
@@ -132,11 +164,12 @@ TEST(Wedge, ErosionRemovesExactlyTheParticlesAboveTheThreshold) {
 }
 
 TEST(Wedge, MassIsConservedWithInflowAndErosion) {
-  // initial_active = 4 (with a window of 3 h0, which would otherwise reach further) puts the
-  // leftmost stamped tile right at the feeding threshold, so a new tile is stamped within the
-  // first few hundredths of a disc of convergence; erosion at 0.75 h0 skims the layer top and
-  // every stamped tile.
-  WedgeRun r({"wedge.initial_active=4", "wedge.window=3", "wedge.erosion_height=0.75", "wedge.erosion_every=50", "wedge.s_end=0.2",
+  // initial_active = 5.99 puts the pro window at -5.99 h0 and the feeding threshold (2 h0 of
+  // slab kept beyond it) at -7.99 h0, just right of the leftmost stamped tile's edge at -8 h0
+  // (tiles of 4 h0 from the end wall at 4 h0), so a new tile is stamped within the first
+  // hundredths of a disc of convergence; erosion at 0.75 h0 skims the layer top and every
+  // stamped tile.
+  WedgeRun r({"wedge.initial_active=5.99", "wedge.window=3", "wedge.erosion_height=0.75", "wedge.erosion_every=50", "wedge.s_end=0.2",
               "wedge.outputs=8"});
   World& w = r.w;
   const double interval = *r.exp->output_interval();
@@ -256,7 +289,7 @@ TEST(Wedge, BothBasalConditionsCarryTheLayerAtThePlateSpeed) {
     // On the retro side, constant velocity pins the basal discs at rest. (Under traction the
     // short retro layer of this test slides on its base as a whole, pushed by the pro layer.)
     const auto retro = retro_base_discs(r.w);
-    ASSERT_GE(retro.size(), 8u);
+    ASSERT_GE(retro.size(), 5u);  // about 11 d of base: 7-12 discs on it, by realisation
     std::size_t pinned = 0;
     for (auto i : retro) {
       const bool kinematic = !r.w.discs.is_dynamic(i);

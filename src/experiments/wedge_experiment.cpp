@@ -65,13 +65,15 @@ void WedgeExperiment::build_layer(World& w) {
   // Until a wedge exists, the layer in front of the S-point stalls on its base and must be
   // long enough to break at the S-point rather than against the rigid kinematic slab.
   window_pro_ = -std::max(spec_.window, spec_.initial_active) * spec_.h0;
-  // The retro-side layer stays dynamic up to its end wall: held at rest, it would be a rigid
-  // backstop a few h0 behind the S-point, where the thesis's retro layer slides on its base.
-  window_retro_ = x_end_ + 1.0;
+  // The retro-side layer is dynamic as far as the pro side's initial stretch (MODEL allows the
+  // far retro slab at rest until deformation approaches; nearer, held at rest it would be a
+  // rigid backstop where the thesis's retro layer slides on its base), and then follows the
+  // retro front like the pro window (update_windows).
+  window_retro_ = std::min(x_end_ + 1.0, std::max(spec_.window, spec_.initial_active) * spec_.h0);
   double left = x_end_ - L;
   while (true) {
     stamp_tile(w, tile_, left, x_end_);  // nothing overlapping the end wall
-    if (left <= window_pro_ - L) break;  // the next tile is stamped as soon as this one moves
+    if (left <= window_pro_ - slab_reserve()) break;
     left -= L;
   }
   slab_left_ = left;
@@ -80,11 +82,13 @@ void WedgeExperiment::build_layer(World& w) {
   update_windows(w);
 }
 
-// Keeps kinematic slab beyond the pro window: stamps a new tile when the leftmost one has
-// moved in far enough.
+// Keeps kinematic slab beyond the pro window: stamps a new tile when less than
+// slab_reserve() of it is left. (A window that jumps past the slab's end in one update is
+// caught up within a step or two; the new tiles turn dynamic at the next window update, as
+// all inflow does.)
 void WedgeExperiment::feed_slab(World& w) {
   slab_left_ += spec_.v * w.dt;
-  if (slab_left_ <= window_pro_ - tile_.length) return;
+  if (slab_left_ <= window_pro_ - slab_reserve()) return;
   slab_left_ -= tile_.length;
   const std::size_t first_cluster = w.clusters.size();
   const auto [first, last] = stamp_tile(w, tile_, slab_left_);
@@ -101,10 +105,14 @@ void WedgeExperiment::feed_slab(World& w) {
 void WedgeExperiment::update_windows(World& w) {
   auto& d = w.discs;
   const double front_y = spec_.h0 + spec_.packing.d_max;
-  double dp = 0;
-  for (std::size_t i = 0; i < d.size(); ++i)
-    if (d.y[i] > front_y) dp = std::min(dp, d.x[i]);
+  double dp = 0, dr = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (d.y[i] <= front_y) continue;
+    dp = std::min(dp, d.x[i]);
+    dr = std::max(dr, d.x[i]);
+  }
   window_pro_ = std::min(window_pro_, dp - spec_.window * spec_.h0);
+  window_retro_ = std::min(x_end_ + 1.0, std::max(window_retro_, dr + spec_.window * spec_.h0));
   if (pinned_.size() < static_cast<std::size_t>(w.next_disc_id)) pinned_.resize(static_cast<std::size_t>(w.next_disc_id), 0);
   auto wanted = [&](double x, bool pinned, double& vx) {
     vx = 0;

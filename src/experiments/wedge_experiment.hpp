@@ -73,6 +73,10 @@ class WedgeExperiment final : public Experiment {
   Surface surface(const World& world) const;
   // Margin cut off each side of the settled box, where its walls loosened the packing.
   double tile_margin() const { return tile_margin_for(spec_.h0); }
+  // Kinematic slab kept beyond the pro window: the transition band and the surface
+  // measurement (from 1 h0 before the window) need a few d of it; more is only cost, and it
+  // is updated every step (a whole tile more was 25% of the discs at h0 = 20).
+  double slab_reserve() const { return 2.0 * spec_.h0; }
 
  public:
   static double tile_margin_for(double h0) { return 0.5 * h0 + 2.0; }

@@ -12,17 +12,25 @@ namespace orogen {
 
 void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* f) {
   const auto n = static_cast<std::ptrdiff_t>(c.size());
+  const double* __restrict x = d.x.data();
+  const double* __restrict y = d.y.data();
+  double* __restrict fx_out = c.fx.data();
+  double* __restrict fy_out = c.fy.data();
+  double* __restrict torque_out = c.torque.data();
 #pragma omp parallel for schedule(static) if (n > min_parallel_items())
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     double fx = 0, fy = 0, tq = 0;
-    for (const auto i : c.members[k]) {  // ascending disc-id order: a fixed summation order
-      if (i < 0) break;
-      const double rx = d.x[i] - c.x[k], ry = d.y[i] - c.y[k];
-      fx += f[i].fx;
-      fy += f[i].fy;
-      tq += f[i].torque + rx * f[i].fy - ry * f[i].fx;
+    // Kinematic bodies (the incoming slab, pinned bodies) ignore their forces.
+    if (c.motion[k] == static_cast<std::uint8_t>(Motion::Dynamic)) {
+      for (const auto i : c.members[k]) {  // ascending disc-id order: a fixed summation order
+        if (i < 0) break;
+        const double rx = x[i] - c.x[k], ry = y[i] - c.y[k];
+        fx += f[i].fx;
+        fy += f[i].fy;
+        tq += f[i].torque + rx * f[i].fy - ry * f[i].fx;
+      }
     }
-    c.fx[k] = fx; c.fy[k] = fy; c.torque[k] = tq;
+    fx_out[k] = fx; fy_out[k] = fy; torque_out[k] = tq;
   }
 }
 
@@ -82,11 +90,36 @@ inline void rotate_pose(double& c, double& s, double h) {
   const double h2 = h * h;
   const double ch = 1 - 0.5 * h2 * (1 - h2 / 12), sh = h * (1 - h2 / 6);
   const double rc = c * ch - s * sh, rs = s * ch + c * sh;
-  const double norm = 1 / std::sqrt(rc * rc + rs * rs);
+  // 1 / |(rc, rs)| by one Newton step from 1: the length is 1 to within rounding (the rotation
+  // keeps it to O(h^6)), so the step is exact to rounding, without a square root or a division.
+  const double norm = 1.5 - 0.5 * (rc * rc + rs * rs);
   // Without a branch, so that the loop vectorises; bodies that do not turn (at rest,
   // kinematic) keep their rotation bit for bit.
   c = h == 0 ? c : rc * norm;
   s = h == 0 ? s : rs * norm;
+}
+
+// Semi-implicit Euler for the rigid bodies [begin, end) (restrict parameters, as for
+// step_free_discs: through the vectors every store would make the compiler reload every array's
+// address, and the loop would not vectorise).
+void step_bodies(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx, double* __restrict vy, double* __restrict omega,
+                 double* __restrict x, double* __restrict y, double* __restrict theta, double* __restrict rot_c,
+                 double* __restrict rot_s, const double* __restrict fx, const double* __restrict fy,
+                 const double* __restrict torque, const double* __restrict inv_m, const double* __restrict inv_i,
+                 const std::uint8_t* __restrict motion, double damp, double gx, double gy, double dt) {
+  for (std::ptrdiff_t k = begin; k < end; ++k) {
+    const bool dynamic = motion[k] == static_cast<std::uint8_t>(Motion::Dynamic);
+    const double vx_new = damp * vx[k] + (fx[k] * inv_m[k] + gx) * dt;
+    const double vy_new = damp * vy[k] + (fy[k] * inv_m[k] + gy) * dt;
+    const double w_new = damp * omega[k] + torque[k] * inv_i[k] * dt;
+    vx[k] = dynamic ? vx_new : vx[k];
+    vy[k] = dynamic ? vy_new : vy[k];
+    omega[k] = dynamic ? w_new : omega[k];
+    x[k] += vx[k] * dt;
+    y[k] += vy[k] * dt;
+    theta[k] += omega[k] * dt;
+    rotate_pose(rot_c[k], rot_s[k], omega[k] * dt);
+  }
 }
 
 }  // namespace
@@ -118,19 +151,12 @@ double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce&
   if (c.size() == 0) return moved;
   gather_cluster_forces(c, d, force);
   const auto nc = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel for schedule(static) if (nc > min_parallel_items())
-  for (std::ptrdiff_t k = 0; k < nc; ++k) {
-    const bool dynamic = c.motion[k] == static_cast<std::uint8_t>(Motion::Dynamic);
-    const double vx_new = damp * c.vx[k] + (c.fx[k] * c.inv_mass[k] + g.gx) * dt;
-    const double vy_new = damp * c.vy[k] + (c.fy[k] * c.inv_mass[k] + g.gy) * dt;
-    const double w_new = damp * c.omega[k] + c.torque[k] * c.inv_inertia[k] * dt;
-    c.vx[k] = dynamic ? vx_new : c.vx[k];
-    c.vy[k] = dynamic ? vy_new : c.vy[k];
-    c.omega[k] = dynamic ? w_new : c.omega[k];
-    c.x[k] += c.vx[k] * dt;
-    c.y[k] += c.vy[k] * dt;
-    c.theta[k] += c.omega[k] * dt;
-    rotate_pose(c.rot_c[k], c.rot_s[k], c.omega[k] * dt);
+#pragma omp parallel if (nc > min_parallel_items())
+  {
+    const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
+    step_bodies(nc * t / threads, nc * (t + 1) / threads, c.vx.data(), c.vy.data(), c.omega.data(), c.x.data(),
+                c.y.data(), c.theta.data(), c.rot_c.data(), c.rot_s.data(), c.fx.data(), c.fy.data(),
+                c.torque.data(), c.inv_mass.data(), c.inv_inertia.data(), c.motion.data(), damp, g.gx, g.gy, dt);
   }
   const double members = update_cluster_discs(c, d, x_ref, y_ref);
   return members == members ? std::max(moved, members) : std::numeric_limits<double>::infinity();

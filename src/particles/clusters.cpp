@@ -88,22 +88,34 @@ void relink_clusters(Clusters& c, Discs& d) {
 
 double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, const double* y_ref) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.size());
+  // Plain pointers: through the vectors, every store would make the compiler reload every
+  // array's address (a double store might change a vector's own pointer, as far as it knows).
+  double* __restrict x = d.x.data();
+  double* __restrict y = d.y.data();
+  double* __restrict vx = d.vx.data();
+  double* __restrict vy = d.vy.data();
+  double* __restrict theta = d.theta.data();
+  double* __restrict omega = d.omega.data();
+  const double* __restrict bdx = d.body_dx.data();
+  const double* __restrict bdy = d.body_dy.data();
+  const auto* __restrict members = c.members.data();
   double max2 = 0;
 #pragma omp parallel for schedule(static) reduction(max : max2) if (n > min_parallel_items())
   for (std::ptrdiff_t k = 0; k < n; ++k) {
-    const double cs = c.rot_c[k], sn = c.rot_s[k];
-    for (const auto i : c.members[k]) {
+    const double cs = c.rot_c[k], sn = c.rot_s[k], cx = c.x[k], cy = c.y[k], cvx = c.vx[k], cvy = c.vy[k],
+                 w = c.omega[k], th = c.theta[k];
+    for (const auto i : members[k]) {
       if (i < 0) break;
-      const double rx = cs * d.body_dx[i] - sn * d.body_dy[i];
-      const double ry = sn * d.body_dx[i] + cs * d.body_dy[i];
-      d.x[i] = c.x[k] + rx;
-      d.y[i] = c.y[k] + ry;
-      d.vx[i] = c.vx[k] - c.omega[k] * ry;
-      d.vy[i] = c.vy[k] + c.omega[k] * rx;
-      d.theta[i] = c.theta[k];
-      d.omega[i] = c.omega[k];
+      const double rx = cs * bdx[i] - sn * bdy[i];
+      const double ry = sn * bdx[i] + cs * bdy[i];
+      x[i] = cx + rx;
+      y[i] = cy + ry;
+      vx[i] = cvx - w * ry;
+      vy[i] = cvy + w * rx;
+      theta[i] = th;
+      omega[i] = w;
       if (x_ref) {
-        const double dx = d.x[i] - x_ref[i], dy = d.y[i] - y_ref[i];
+        const double dx = x[i] - x_ref[i], dy = y[i] - y_ref[i];
         max2 = std::max(max2, dx * dx + dy * dy);
       }
     }
