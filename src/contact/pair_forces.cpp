@@ -15,11 +15,22 @@ struct DiscView {
   const double *x, *y, *vx, *vy, *omega, *radius;
 };
 
+// The pair arrays the contact loop reads and writes, as plain pointers: through the vectors,
+// every double stored (a history, a block entry, a force) would make the compiler reload every
+// array's address, since as far as it knows the store might change a vector's own pointer.
+struct PairView {
+  const std::uint32_t* __restrict first;
+  const std::uint32_t* __restrict second;
+  const double* __restrict gamma_n;
+  double* __restrict xi;
+};
+
 // Gathers the touching pairs among [p0, p0 + count) into the block (their pair numbers in
 // `pair`), zeroes the history of the others, and runs the block kernel on the touching ones.
-int compute_block(NeighborList& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t p0,
+int compute_block(const PairView& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t p0,
                   int count, ContactBlock& b, std::uint32_t* pair) {
   int m = 0;
+  const double damping_ratio = law.tangential_damping_ratio;
   for (int k = 0; k < count; ++k) {
     const std::size_t p = p0 + k;
     const auto i = L.first[p], j = L.second[p];
@@ -28,7 +39,7 @@ int compute_block(NeighborList& L, const DiscView& d, const ContactLaw& law, dou
     b.dx[m] = dx; b.dy[m] = dy; b.ri[m] = d.radius[i]; b.rj[m] = d.radius[j];
     b.dvx[m] = d.vx[j] - d.vx[i]; b.dvy[m] = d.vy[j] - d.vy[i]; b.wi[m] = d.omega[i]; b.wj[m] = d.omega[j];
     b.gn[m] = L.gamma_n[p];
-    b.gs[m] = law.tangential_damping_ratio * b.gn[m];
+    b.gs[m] = damping_ratio * b.gn[m];
     b.xi[m] = L.xi[p];
     pair[m++] = static_cast<std::uint32_t>(p);
   }
@@ -38,8 +49,8 @@ int compute_block(NeighborList& L, const DiscView& d, const ContactLaw& law, dou
 }
 
 // All pairs of one chunk, in pair order, added onto the discs' forces.
-void chunk_forces(NeighborList& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t begin,
-                  std::size_t end, DiscForce* force) {
+void chunk_forces(const PairView& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t begin,
+                  std::size_t end, DiscForce* __restrict force) {
   ContactBlock b;
   std::uint32_t pair[kContactBlock];
   for (std::size_t p0 = begin; p0 < end; p0 += kContactBlock) {
@@ -58,6 +69,7 @@ void chunk_forces(NeighborList& L, const DiscView& d, const ContactLaw& law, dou
 void compute_pair_forces(NeighborList& L, const Discs& discs, const ContactLaw& law, double dt, PairScratch& s) {
   const DiscView d{discs.x.data(), discs.y.data(), discs.vx.data(), discs.vy.data(), discs.omega.data(),
                    discs.radius.data()};
+  const PairView pairs{L.first.data(), L.second.data(), L.gamma_n.data(), L.xi.data()};
   s.forces.resize(discs.size());
   DiscForce* force = s.forces.data();
   const auto n = static_cast<std::ptrdiff_t>(s.forces.size());
@@ -74,7 +86,7 @@ void compute_pair_forces(NeighborList& L, const Discs& discs, const ContactLaw& 
     for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
 #pragma omp for schedule(dynamic, 1)
       for (std::ptrdiff_t k = parity; k < chunks; k += 2)
-        chunk_forces(L, d, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
+        chunk_forces(pairs, d, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
     }
   }
 }

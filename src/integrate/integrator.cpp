@@ -17,7 +17,9 @@ void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* f) {
   double* __restrict fx_out = c.fx.data();
   double* __restrict fy_out = c.fy.data();
   double* __restrict torque_out = c.torque.data();
-#pragma omp parallel for schedule(static) if (n > min_parallel_items())
+  // Threaded by the number of discs, like every loop of the step (a body's work is its discs').
+  const bool parallel = static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items();
+#pragma omp parallel for schedule(static) if (parallel)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     double fx = 0, fy = 0, tq = 0;
     // Kinematic bodies (the incoming slab, pinned bodies) ignore their forces.
@@ -151,7 +153,7 @@ double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce&
   if (c.size() == 0) return moved;
   gather_cluster_forces(c, d, force);
   const auto nc = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel if (nc > min_parallel_items())
+#pragma omp parallel if (n > min_parallel_items())  // by discs, as every loop of the step
   {
     const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
     step_bodies(nc * t / threads, nc * (t + 1) / threads, c.vx.data(), c.vy.data(), c.omega.data(), c.x.data(),

@@ -100,7 +100,9 @@ double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, co
   const double* __restrict bdy = d.body_dy.data();
   const auto* __restrict members = c.members.data();
   double max2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max2) if (n > min_parallel_items())
+  // Threaded by the number of discs, like every loop of the step (a body's work is its discs').
+  const bool parallel = static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items();
+#pragma omp parallel for schedule(static) reduction(max : max2) if (parallel)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const double cs = c.rot_c[k], sn = c.rot_s[k], cx = c.x[k], cy = c.y[k], cvx = c.vx[k], cvy = c.vy[k],
                  w = c.omega[k], th = c.theta[k];
