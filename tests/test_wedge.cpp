@@ -71,7 +71,8 @@ TEST(Wedge, LayerStartsClearOfTheEndWallAndStaysQuiet) {
   EXPECT_GT(right, x_end - 1.5);  // and reaches it
   for (int s = 0; s < 500; ++s) ASSERT_TRUE(r.exp->advance(r.w));
   double fastest = 0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) fastest = std::max(fastest, std::hypot(w.discs.vx[i], w.discs.vy[i]));
+  for (std::size_t i = 0; i < w.discs.size(); ++i)
+    fastest = std::max(fastest, std::hypot(w.discs.vx[i], w.discs.vy[i]));
   // The plate moves at 0.025 and a surface cluster that tumbles off its perch reaches ~0.3; a
   // particle blasted out of the wall moved at 2.6 here (15 at h0 = 20).
   EXPECT_LT(fastest, 1.0);
@@ -85,7 +86,8 @@ TEST(Wedge, FarRetroLayerRestsUntilTheRetroFrontApproaches) {
   const double edge = 3 * kH0;
   int far = 0, near = 0;
   for (std::size_t i = 0; i < w.discs.size(); ++i) {
-    const double x = w.discs.cluster[i] >= 0 ? w.clusters.x[static_cast<std::size_t>(w.discs.cluster[i])] : w.discs.x[i];
+    const auto k = w.discs.cluster[i];
+    const double x = k >= 0 ? w.clusters.x[static_cast<std::size_t>(k)] : w.discs.x[i];
     if (x > edge + 0.01) {
       ++far;
       EXPECT_FALSE(w.discs.is_dynamic(i));

@@ -101,12 +101,11 @@ inline void rotate_pose(double& c, double& s, double h) {
   s = h == 0 ? s : rs * norm;
 }
 
-// Semi-implicit Euler for the rigid bodies [begin, end) (restrict parameters, as for
-// step_free_discs: through the vectors every store would make the compiler reload every array's
-// address, and the loop would not vectorise).
-void step_bodies(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx, double* __restrict vy, double* __restrict omega,
-                 double* __restrict x, double* __restrict y, double* __restrict theta, double* __restrict rot_c,
-                 double* __restrict rot_s, const double* __restrict fx, const double* __restrict fy,
+// Semi-implicit Euler for the rigid bodies [begin, end), through restrict parameters as
+// step_free_discs.
+void step_bodies(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx, double* __restrict vy,
+                 double* __restrict omega, double* __restrict x, double* __restrict y, double* __restrict theta,
+                 double* __restrict rot_c, double* __restrict rot_s, const double* __restrict fx, const double* __restrict fy,
                  const double* __restrict torque, const double* __restrict inv_m, const double* __restrict inv_i,
                  const std::uint8_t* __restrict motion, double damp, double gx, double gy, double dt) {
   for (std::ptrdiff_t k = begin; k < end; ++k) {
