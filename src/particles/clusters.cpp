@@ -8,6 +8,11 @@
 
 namespace orogen {
 
+namespace {
+double place_bodies(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrdiff_t last, const double* x_ref,
+                    const double* y_ref);
+}  // namespace
+
 void Clusters::compact(std::span<const std::uint8_t> keep) { compact_arrays(*this, keep); }
 
 std::size_t make_cluster(Clusters& c, Discs& d, std::span<const std::size_t> idx, std::int64_t cluster_id) {
@@ -44,7 +49,7 @@ std::size_t make_cluster(Clusters& c, Discs& d, std::span<const std::size_t> idx
   c.id.push_back(cluster_id);
   c.motion.push_back(d.motion[idx[0]]);
   c.members.push_back(members);
-  update_cluster_discs(c, d);
+  place_bodies(c, d, static_cast<std::ptrdiff_t>(k), static_cast<std::ptrdiff_t>(k) + 1, nullptr, nullptr);
   return k;
 }
 
@@ -86,8 +91,11 @@ void relink_clusters(Clusters& c, Discs& d) {
   }
 }
 
-double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, const double* y_ref) {
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(c.size());
+namespace {
+
+// Places the member discs of bodies [first, last) (see update_cluster_discs).
+double place_bodies(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrdiff_t last, const double* x_ref,
+                    const double* y_ref) {
   // Plain pointers: through the vectors, every store would make the compiler reload every
   // array's address (a double store might change a vector's own pointer, as far as it knows).
   double* __restrict x = d.x.data();
@@ -101,9 +109,9 @@ double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, co
   const auto* __restrict members = c.members.data();
   double max2 = 0;
   // Threaded by the number of discs, like every loop of the step (a body's work is its discs').
-  const bool parallel = static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items();
+  const bool parallel = last - first > 1 && static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items();
 #pragma omp parallel for schedule(static) reduction(max : max2) if (parallel)
-  for (std::ptrdiff_t k = 0; k < n; ++k) {
+  for (std::ptrdiff_t k = first; k < last; ++k) {
     const double cs = c.rot_c[k], sn = c.rot_s[k], cx = c.x[k], cy = c.y[k], cvx = c.vx[k], cvy = c.vy[k],
                  w = c.omega[k], th = c.theta[k];
     for (const auto i : members[k]) {
@@ -123,6 +131,12 @@ double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, co
     }
   }
   return std::sqrt(max2);
+}
+
+}  // namespace
+
+double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, const double* y_ref) {
+  return place_bodies(c, d, 0, static_cast<std::ptrdiff_t>(c.size()), x_ref, y_ref);
 }
 
 }  // namespace orogen
