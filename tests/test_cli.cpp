@@ -229,6 +229,10 @@ TEST_F(Cli, EveryExperimentSameOutputsForOneAndTwoThreads) {
       {"wedge", "--set run.experiment=wedge --set layer.thickness=5 --set wedge.tile_length=4"
                 " --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.s_end=0.2 --set wedge.outputs=4"
                 " --set wedge.erosion_height=0.9"},
+      // The same with the thread count switched between 2 and 1 every few milliseconds.
+      {"wedge_switching", "--set run.experiment=wedge --set layer.thickness=5 --set wedge.tile_length=4"
+                          " --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.s_end=0.2"
+                          " --set wedge.outputs=4 --set wedge.erosion_height=0.9 --set run.adapt_slice=0.002"},
   };
   for (const auto& [name, args] : runs) {
     SCOPED_TRACE(name);
@@ -242,6 +246,11 @@ TEST_F(Cli, EveryExperimentSameOutputsForOneAndTwoThreads) {
     expect_same_snapshots(one / "snapshots.h5", two / "snapshots.h5");
     for (const char* f : {"series.csv", "summary.csv", "removals.csv", "checkpoint.bin"})
       if (fs::exists(one / f) || fs::exists(two / f)) expect_same_bytes(one / f, two / f);
+    if (name == "wedge_switching") {  // it did step on both counts
+      const std::string log = slurp(two / "run.log");
+      EXPECT_NE(log.find("threads: 2 thread(s) for"), std::string::npos) << log;
+      EXPECT_NE(log.find(", 1 thread(s) for"), std::string::npos) << log;
+    }
   }
   const auto bad = orogen_cli("run --out '" + (dir_ / "bad").string() + "' " + kTiny, dir_,
                               "OROGEN_MIN_PARALLEL_ITEMS=lots ");

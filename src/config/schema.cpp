@@ -57,6 +57,12 @@ const std::vector<KeySpec>& schema() {
            "experiment, a singly-vergent critical wedge, or a biaxial test of bulk friction"),
       integer("run.seed", 1, ge(0), "seed of the packing generator"),
       integer("run.threads", 0, ge(0), "OpenMP threads, 0 = all cores"),
+      boolean("run.adapt_threads", true,
+              "with more than one thread, time one thread against all of them now and then during the run "
+              "and step with the faster (on a shared machine a second core is at times not a core of its "
+              "own); results do not depend on it"),
+      real("run.adapt_slice", 2.0, gt(0), none,
+           "wall seconds each thread count is timed for before the faster is chosen [s]"),
 
       text("particles.packing", "random_clusters", {"hexagonal", "random_discs", "random_clusters"},
            "how the layer is built: hexagonal discs, random discs or random rigid clusters"),

@@ -19,6 +19,7 @@
 #include "io/vtp_writer.hpp"
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
+#include "run/thread_tuner.hpp"
 #include "world/world_archive.hpp"
 
 namespace fs = std::filesystem;
@@ -96,14 +97,22 @@ class Run {
     const auto t0 = std::chrono::steady_clock::now();
     const std::uint64_t step0 = world_.step;
     double particle_steps = 0;
+    auto seconds = [&t0] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    ThreadTuner tuner(config_.get_bool("run.adapt_threads") ? omp_get_max_threads() : 1,
+                      config_.get_float("run.adapt_slice"));
     while (exp_->advance(world_)) {
-      particle_steps += static_cast<double>(world_.discs.size());
+      const auto work = static_cast<double>(world_.discs.size());
+      particle_steps += work;
+      const int threads = tuner.threads();
+      if (tuner.after_step(work, seconds()) != threads) omp_set_num_threads(tuner.threads());
       if (world_.time >= static_cast<double>(state_.outputs) * interval_ - 1e-9 * interval_) {
         output();
-        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        log().info("output {} at step {} (t = {:.4g}): {} discs, {:.3g} M particle-steps/s, {}", state_.outputs - 1,
-                   world_.step, world_.time, world_.discs.size(), particle_steps / secs / 1e6, exp_->status(world_));
+        const double secs = seconds();
+        log().info("output {} at step {} (t = {:.4g}): {} discs, {:.3g} M particle-steps/s{}, {}", state_.outputs - 1,
+                   world_.step, world_.time, world_.discs.size(), particle_steps / secs / 1e6,
+                   tuner.active() ? fmt::format(" (now on {} thread(s))", tuner.threads()) : "", exp_->status(world_));
         if (checkpoint_every_ > 0 && state_.outputs % checkpoint_every_ == 0) checkpoint();
+        tuner.restart(seconds());  // outputs are not stepping: time them apart
       }
       if ((world_.step & 63) == 0 && progress.enabled())
         progress.update(world_.step, world_.time, world_.discs.size(), exp_->fraction_done(world_), exp_->status(world_));
@@ -119,6 +128,7 @@ class Run {
                "list builds in all)",
                world_.step, world_.time, world_.step - step0, secs, particle_steps / std::max(secs, 1e-9) / 1e6,
                world_.neighbors.builds);
+    if (const auto threads = tuner.summary(); !threads.empty()) log().info("threads: {}", threads);
   }
 
   World& world() { return world_; }

@@ -1,0 +1,59 @@
+#include "run/thread_tuner.hpp"
+
+#include <fmt/format.h>
+
+namespace orogen {
+
+ThreadTuner::ThreadTuner(int max_threads, double slice, int probe_every)
+    : max_(max_threads), slice_(slice), probe_every_(probe_every), current_(max_threads) {}
+
+void ThreadTuner::restart(double now) {
+  slice_start_ = now;
+  slice_work_ = 0;
+  slice_steps_ = 0;
+}
+
+int ThreadTuner::after_step(double work, double now) {
+  if (!active()) return current_;
+  if (slice_start_ < 0) restart(now);
+  slice_work_ += work;
+  slice_steps_ += 1;
+  const double elapsed = now - slice_start_;
+  if (elapsed < slice_) return current_;
+  Count& c = stats(current_);
+  c.rate = slice_work_ / elapsed;
+  c.steps += slice_steps_;
+  c.work += slice_work_;
+  c.seconds += elapsed;
+  restart(now);
+  const Count& o = stats(other(current_));
+  if (probing_ || o.rate == 0) {
+    // After a probe (or before the other count was ever timed): stay on the faster.
+    probing_ = o.rate == 0;
+    if (o.rate > c.rate || o.rate == 0) current_ = other(current_);
+    slices_since_probe_ = 0;
+  } else if (++slices_since_probe_ >= probe_every_) {
+    probing_ = true;
+    current_ = other(current_);
+  }
+  return current_;
+}
+
+double ThreadTuner::share(int threads) const {
+  const double steps = one_.steps + all_.steps;
+  return steps > 0 ? stats(threads).steps / steps : 0.0;
+}
+
+std::string ThreadTuner::summary() const {
+  if (!active()) return "";
+  std::string out;
+  for (const int threads : {max_, 1}) {
+    const Count& c = stats(threads);
+    if (c.steps == 0) continue;
+    out += fmt::format("{}{} thread(s) for {:.0f}% of the timed steps ({:.3g} M particle-steps/s)",
+                       out.empty() ? "" : ", ", threads, 100 * share(threads), c.work / c.seconds / 1e6);
+  }
+  return out;
+}
+
+}  // namespace orogen

@@ -1,0 +1,51 @@
+#pragma once
+// Picks the faster of one thread and all of them while a run steps. On a shared machine a
+// second core is at times not a core of its own (two threads then run slower than one, with
+// nothing else running here), and the phases come and go during a long run. Results do not
+// depend on the thread count (every loop sums in a fixed order), so switching is free.
+#include <string>
+
+namespace orogen {
+
+class ThreadTuner {
+ public:
+  // max_threads: the team size asked for (1 turns tuning off); slice: wall seconds each
+  // count is timed for before the next decision; probe_every: slices on the chosen count
+  // between two probes of the other.
+  ThreadTuner(int max_threads, double slice, int probe_every = 8);
+
+  // The work of one step (particle-steps) done at wall time `now` [s]. Returns the thread
+  // count for the next step (changed only at the end of a slice).
+  int after_step(double work, double now);
+  // Drops the slice under way (call after work that is not stepping: outputs, checkpoints).
+  void restart(double now);
+
+  int threads() const { return current_; }
+  bool active() const { return max_ > 1; }
+  // Fraction of the timed steps run on this thread count (1 or max_threads).
+  double share(int threads) const;
+  // Steps and rates by thread count over the slices timed so far, for the log ("" when not
+  // active or before the first slice ends).
+  std::string summary() const;
+
+ private:
+  struct Count {
+    double rate = 0;   // particle-steps per second, last slice timed on this count
+    double steps = 0;  // steps run on it
+    double work = 0, seconds = 0;
+  };
+  Count& stats(int threads) { return threads == 1 ? one_ : all_; }
+  const Count& stats(int threads) const { return threads == 1 ? one_ : all_; }
+  int other(int threads) const { return threads == 1 ? max_ : 1; }
+
+  int max_;
+  double slice_;
+  int probe_every_;
+  int current_;
+  bool probing_ = false;
+  int slices_since_probe_ = 0;
+  double slice_start_ = -1, slice_work_ = 0, slice_steps_ = 0;
+  Count one_, all_;
+};
+
+}  // namespace orogen

@@ -1,0 +1,79 @@
+// The thread tuner's choices on a synthetic clock: it times all threads, probes one, keeps the
+// faster, and probes again every few slices, so that it follows a machine whose second core
+// comes and goes.
+#include <gtest/gtest.h>
+
+#include "run/thread_tuner.hpp"
+
+namespace orogen {
+namespace {
+
+// Steps the tuner for `seconds` of wall time at `rate(threads)` particle-steps per second,
+// 1000 particle-steps per step; returns the thread count at the end.
+template <class Rate>
+int step_for(ThreadTuner& t, double& now, double seconds, Rate rate) {
+  const double end = now + seconds;
+  while (now < end) {
+    now += 1000.0 / rate(t.threads());
+    t.after_step(1000.0, now);
+  }
+  return t.threads();
+}
+
+TEST(ThreadTuner, KeepsAllThreadsWhenTheyAreFaster) {
+  ThreadTuner t(2, 1.0, 4);
+  double now = 0;
+  auto two_fast = [](int n) { return n == 2 ? 1.5e6 : 1e6; };
+  EXPECT_EQ(t.threads(), 2);
+  step_for(t, now, 1.01, two_fast);  // first slice on 2, then a probe of 1
+  EXPECT_EQ(t.threads(), 1);
+  step_for(t, now, 1.01, two_fast);  // the probe was slower: back to 2
+  EXPECT_EQ(t.threads(), 2);
+  step_for(t, now, 20, two_fast);
+  // Mostly on 2: one probe slice of 1 in every five slices (1000 steps against 4 x 1500).
+  EXPECT_NEAR(t.share(2), 6.0 / 7.0, 0.03);
+  const std::string s = t.summary();
+  EXPECT_NE(s.find("2 thread(s) for 8"), std::string::npos) << s;
+  EXPECT_NE(s.find("(1.5 M particle-steps/s)"), std::string::npos) << s;
+}
+
+TEST(ThreadTuner, FallsBackToOneThreadAndReturnsWhenTheCoreComesBack) {
+  ThreadTuner t(2, 1.0, 4);
+  double now = 0;
+  auto two_slow = [](int n) { return n == 2 ? 0.6e6 : 1e6; };
+  step_for(t, now, 2.02, two_slow);
+  EXPECT_EQ(t.threads(), 1);
+  step_for(t, now, 3.5, two_slow);  // stays on 1 between probes
+  EXPECT_EQ(t.threads(), 1);
+  step_for(t, now, 10, two_slow);
+  EXPECT_GT(t.share(1), 0.8);  // 2 only for its first slice and one probe slice in five
+  // The second core is back: the next probe (within five slices) finds two threads faster
+  // and keeps them.
+  auto two_fast = [](int n) { return n == 2 ? 1.8e6 : 1e6; };
+  const double before = t.share(2);
+  step_for(t, now, 4.0, two_fast);
+  EXPECT_EQ(t.threads(), 2);
+  step_for(t, now, 20, two_fast);
+  EXPECT_GT(t.share(2), before + 0.3);
+}
+
+TEST(ThreadTuner, RestartDropsTheSliceUnderWay) {
+  ThreadTuner t(2, 1.0, 4);
+  t.after_step(1000.0, 0.0);  // slice starts here
+  t.after_step(1000.0, 0.9);
+  t.restart(5.0);  // an output took four seconds: not stepping time
+  EXPECT_EQ(t.after_step(1000.0, 5.5), 2);
+  EXPECT_EQ(t.summary(), "");  // no slice finished yet
+  EXPECT_EQ(t.after_step(1000.0, 6.0), 1);  // one second of stepping after the restart: probe 1
+}
+
+TEST(ThreadTuner, OneThreadIsNotTuned) {
+  ThreadTuner t(1, 1.0, 4);
+  double now = 0;
+  EXPECT_EQ(step_for(t, now, 10, [](int) { return 1e6; }), 1);
+  EXPECT_FALSE(t.active());
+  EXPECT_EQ(t.summary(), "");
+}
+
+}  // namespace
+}  // namespace orogen
