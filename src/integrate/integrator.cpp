@@ -10,17 +10,18 @@
 
 namespace orogen {
 
-void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* f) {
-  const auto n = static_cast<std::ptrdiff_t>(c.size());
+namespace {
+
+// Sums the member disc forces of bodies [begin, end) onto them: force, and torque about the
+// centre of mass.
+void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* __restrict f, std::ptrdiff_t begin,
+                           std::ptrdiff_t end) {
   const double* __restrict x = d.x.data();
   const double* __restrict y = d.y.data();
   double* __restrict fx_out = c.fx.data();
   double* __restrict fy_out = c.fy.data();
   double* __restrict torque_out = c.torque.data();
-  // Threaded by the number of discs, like every loop of the step (a body's work is its discs').
-  const bool parallel = static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items();
-#pragma omp parallel for schedule(static) if (parallel)
-  for (std::ptrdiff_t k = 0; k < n; ++k) {
+  for (std::ptrdiff_t k = begin; k < end; ++k) {
     double fx = 0, fy = 0, tq = 0;
     // Kinematic bodies (the incoming slab, pinned bodies) ignore their forces.
     if (c.motion[k] == static_cast<std::uint8_t>(Motion::Dynamic)) {
@@ -35,8 +36,6 @@ void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* f) {
     fx_out[k] = fx; fy_out[k] = fy; torque_out[k] = tq;
   }
 }
-
-namespace {
 
 struct FreeDiscStep {
   double max2 = 0;              // largest squared displacement from the reference
@@ -129,42 +128,50 @@ void step_bodies(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx
 
 }  // namespace
 
+// Bodies per block: each thread takes its bodies a block at a time through the three
+// stages (forces, step, placement), so that a block's arrays are still in cache for the next
+// stage, while each stage stays a loop of its own (the body step vectorises).
+constexpr std::ptrdiff_t kBodyBlock = 256;
+
 double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt, const double* x_ref,
                  const double* y_ref) {
   const auto n = static_cast<std::ptrdiff_t>(d.size());
+  const auto nc = static_cast<std::ptrdiff_t>(c.size());
   const double damp = 1.0 - g.drag * dt;
-  double max2 = 0;
+  // Discs outside clusters, if any (with none, the usual cluster packing, the bodies place
+  // every disc and that pass would be wasted).
+  const bool free_discs = std::find(d.cluster.begin(), d.cluster.end(), kNoCluster) != d.cluster.end();
+  double free2 = 0, members2 = 0;
   std::int64_t not_finite = 0;
-  // Discs outside clusters, if any (with none, the usual cluster packing, update_cluster_discs
-  // below sets every disc and this pass would be wasted).
-  if (std::find(d.cluster.begin(), d.cluster.end(), kNoCluster) != d.cluster.end()) {
-#pragma omp parallel reduction(max : max2) reduction(+ : not_finite) if (n > min_parallel_items())
-    {
-      // A static split of the discs over the threads (a max and a count do not depend on it).
-      const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
-      const std::ptrdiff_t begin = n * t / threads, end = n * (t + 1) / threads;
-      const FreeDiscStep r = step_free_discs(begin, end, d.vx.data(), d.vy.data(), d.omega.data(), d.x.data(),
-                                             d.y.data(), d.theta.data(), force, d.inv_mass.data(),
-                                             d.inv_inertia.data(), d.motion.data(), d.cluster.data(), x_ref, y_ref,
-                                             damp, g.gx, g.gy, dt);
-      max2 = std::max(max2, r.max2);
-      not_finite += r.not_finite;
+  // One thread team for the whole update: the free-disc pass and the body passes touch
+  // different discs (members are left to their bodies), so no thread waits for another.
+#pragma omp parallel reduction(max : free2, members2) reduction(+ : not_finite) if (n > min_parallel_items())
+  {
+    // Static splits over the threads (each disc's and body's update is its own, and a max and
+    // a count do not depend on the split).
+    const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
+    if (free_discs) {
+      const FreeDiscStep r = step_free_discs(n * t / threads, n * (t + 1) / threads, d.vx.data(), d.vy.data(),
+                                             d.omega.data(), d.x.data(), d.y.data(), d.theta.data(), force,
+                                             d.inv_mass.data(), d.inv_inertia.data(), d.motion.data(),
+                                             d.cluster.data(), x_ref, y_ref, damp, g.gx, g.gy, dt);
+      free2 = r.max2;
+      not_finite = r.not_finite;
+    }
+    const std::ptrdiff_t end = nc * (t + 1) / threads;
+    for (std::ptrdiff_t b0 = nc * t / threads; b0 < end; b0 += kBodyBlock) {
+      const std::ptrdiff_t b1 = std::min(end, b0 + kBodyBlock);
+      gather_cluster_forces(c, d, force, b0, b1);
+      step_bodies(b0, b1, c.vx.data(), c.vy.data(), c.omega.data(), c.x.data(), c.y.data(), c.theta.data(),
+                  c.rot_c.data(), c.rot_s.data(), c.fx.data(), c.fy.data(), c.torque.data(), c.inv_mass.data(),
+                  c.inv_inertia.data(), c.motion.data(), damp, g.gx, g.gy, dt);
+      members2 = std::max(members2, place_cluster_discs(c, d, b0, b1, x_ref, y_ref));
     }
   }
   // NaN counts as infinitely far: it forces a rebuild, where it is caught.
-  const double moved = not_finite ? std::numeric_limits<double>::infinity() : std::sqrt(max2);
-  if (c.size() == 0) return moved;
-  gather_cluster_forces(c, d, force);
-  const auto nc = static_cast<std::ptrdiff_t>(c.size());
-#pragma omp parallel if (n > min_parallel_items())  // by discs, as every loop of the step
-  {
-    const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
-    step_bodies(nc * t / threads, nc * (t + 1) / threads, c.vx.data(), c.vy.data(), c.omega.data(), c.x.data(),
-                c.y.data(), c.theta.data(), c.rot_c.data(), c.rot_s.data(), c.fx.data(), c.fy.data(),
-                c.torque.data(), c.inv_mass.data(), c.inv_inertia.data(), c.motion.data(), damp, g.gx, g.gy, dt);
-  }
-  const double members = update_cluster_discs(c, d, x_ref, y_ref);
-  return members == members ? std::max(moved, members) : std::numeric_limits<double>::infinity();
+  if (not_finite) return std::numeric_limits<double>::infinity();
+  const double moved = std::sqrt(std::max(free2, members2));
+  return moved == moved ? moved : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace orogen

@@ -12,10 +12,6 @@ struct BodyForce {
   double drag = 0.0;           // extra viscous drag rate (1/time), used only while settling
 };
 
-// Sums member disc forces (by disc index) onto each cluster: force, and torque about its
-// centre of mass.
-void gather_cluster_forces(Clusters& clusters, const Discs& discs, const DiscForce* forces);
-
 // Advances free discs and cluster bodies by dt under the given disc forces, then places member
 // discs on their bodies. Kinematic discs and bodies move with their imposed velocity.
 // Returns the largest distance of a disc from its reference position (x_ref, y_ref by disc

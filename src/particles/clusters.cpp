@@ -1,5 +1,7 @@
 #include "particles/clusters.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -7,11 +9,6 @@
 #include "util/soa.hpp"
 
 namespace orogen {
-
-namespace {
-double place_bodies(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrdiff_t last, const double* x_ref,
-                    const double* y_ref);
-}  // namespace
 
 void Clusters::compact(std::span<const std::uint8_t> keep) { compact_arrays(*this, keep); }
 
@@ -49,7 +46,7 @@ std::size_t make_cluster(Clusters& c, Discs& d, std::span<const std::size_t> idx
   c.id.push_back(cluster_id);
   c.motion.push_back(d.motion[idx[0]]);
   c.members.push_back(members);
-  place_bodies(c, d, static_cast<std::ptrdiff_t>(k), static_cast<std::ptrdiff_t>(k) + 1, nullptr, nullptr);
+  place_cluster_discs(c, d, static_cast<std::ptrdiff_t>(k), static_cast<std::ptrdiff_t>(k) + 1, nullptr, nullptr);
   return k;
 }
 
@@ -91,11 +88,8 @@ void relink_clusters(Clusters& c, Discs& d) {
   }
 }
 
-namespace {
-
-// Places the member discs of bodies [first, last) (see update_cluster_discs).
-double place_bodies(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrdiff_t last, const double* x_ref,
-                    const double* y_ref) {
+double place_cluster_discs(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrdiff_t last,
+                           const double* x_ref, const double* y_ref) {
   // Plain pointers: through the vectors, every store would make the compiler reload every
   // array's address (a double store might change a vector's own pointer, as far as it knows).
   double* __restrict x = d.x.data();
@@ -108,9 +102,6 @@ double place_bodies(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrd
   const double* __restrict bdy = d.body_dy.data();
   const auto* __restrict members = c.members.data();
   double max2 = 0;
-  // Threaded by the number of discs, like every loop of the step (a body's work is its discs').
-  const bool parallel = last - first > 1 && static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items();
-#pragma omp parallel for schedule(static) reduction(max : max2) if (parallel)
   for (std::ptrdiff_t k = first; k < last; ++k) {
     const double cs = c.rot_c[k], sn = c.rot_s[k], cx = c.x[k], cy = c.y[k], cvx = c.vx[k], cvy = c.vy[k],
                  w = c.omega[k], th = c.theta[k];
@@ -130,13 +121,19 @@ double place_bodies(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrd
       }
     }
   }
-  return std::sqrt(max2);
+  return max2;
 }
 
-}  // namespace
-
 double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, const double* y_ref) {
-  return place_bodies(c, d, 0, static_cast<std::ptrdiff_t>(c.size()), x_ref, y_ref);
+  const auto n = static_cast<std::ptrdiff_t>(c.size());
+  double max2 = 0;
+  // Threaded by the number of discs, like every loop of the step (a body's work is its discs').
+#pragma omp parallel reduction(max : max2) if (static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items())
+  {
+    const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
+    max2 = place_cluster_discs(c, d, n * t / threads, n * (t + 1) / threads, x_ref, y_ref);
+  }
+  return std::sqrt(max2);
 }
 
 }  // namespace orogen

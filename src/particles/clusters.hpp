@@ -62,4 +62,9 @@ void relink_clusters(Clusters& clusters, Discs& discs);
 double update_cluster_discs(const Clusters& clusters, Discs& discs, const double* x_ref = nullptr,
                             const double* y_ref = nullptr);
 
+// The same for bodies [first, last) on the calling thread alone; returns the largest *squared*
+// distance (0 without references).
+double place_cluster_discs(const Clusters& clusters, Discs& discs, std::ptrdiff_t first, std::ptrdiff_t last,
+                           const double* x_ref, const double* y_ref);
+
 }  // namespace orogen
