@@ -57,14 +57,15 @@ TEST(ThreadTuner, FallsBackToOneThreadAndReturnsWhenTheCoreComesBack) {
   EXPECT_GT(t.share(2), before + 0.3);
 }
 
-TEST(ThreadTuner, RestartDropsTheSliceUnderWay) {
+TEST(ThreadTuner, TimeOutsideSteppingIsNotCounted) {
   ThreadTuner t(2, 1.0, 4);
-  t.after_step(1000.0, 0.0);  // slice starts here
-  t.after_step(1000.0, 0.9);
-  t.restart(5.0);  // an output took four seconds: not stepping time
-  EXPECT_EQ(t.after_step(1000.0, 5.5), 2);
-  EXPECT_EQ(t.summary(), "");  // no slice finished yet
-  EXPECT_EQ(t.after_step(1000.0, 6.0), 1);  // one second of stepping after the restart: probe 1
+  t.after_step(1000.0, 0.0);  // the slice starts here
+  t.after_step(1000.0, 0.5);
+  t.exclude(4.0);  // an output took four seconds (from 0.5 to 4.5): not stepping time
+  EXPECT_EQ(t.after_step(1000.0, 4.9), 2);
+  EXPECT_EQ(t.summary(), "");  // 0.9 s of stepping: the slice has not ended
+  EXPECT_EQ(t.after_step(1000.0, 5.1), 1);  // 1.1 s of stepping: it ends, and one thread is probed
+  EXPECT_NE(t.summary().find("(0.00364 M particle-steps/s)"), std::string::npos) << t.summary();  // 4000 / 1.1 s
 }
 
 TEST(ThreadTuner, OneThreadIsNotTuned) {

@@ -106,13 +106,14 @@ class Run {
       const int threads = tuner.threads();
       if (tuner.after_step(work, seconds()) != threads) omp_set_num_threads(tuner.threads());
       if (world_.time >= static_cast<double>(state_.outputs) * interval_ - 1e-9 * interval_) {
+        const double output_start = seconds();
         output();
         const double secs = seconds();
         log().info("output {} at step {} (t = {:.4g}): {} discs, {:.3g} M particle-steps/s{}, {}", state_.outputs - 1,
                    world_.step, world_.time, world_.discs.size(), particle_steps / secs / 1e6,
                    tuner.active() ? fmt::format(" (now on {} thread(s))", tuner.threads()) : "", exp_->status(world_));
         if (checkpoint_every_ > 0 && state_.outputs % checkpoint_every_ == 0) checkpoint();
-        tuner.restart(seconds());  // outputs are not stepping: time them apart
+        tuner.exclude(seconds() - output_start);  // outputs are not stepping
       }
       if ((world_.step & 63) == 0 && progress.enabled())
         progress.update(world_.step, world_.time, world_.discs.size(), exp_->fraction_done(world_), exp_->status(world_));

@@ -13,6 +13,10 @@ void ThreadTuner::restart(double now) {
   slice_steps_ = 0;
 }
 
+void ThreadTuner::exclude(double seconds) {
+  if (slice_start_ >= 0) slice_start_ += seconds;
+}
+
 int ThreadTuner::after_step(double work, double now) {
   if (!active()) return current_;
   if (slice_start_ < 0) restart(now);

@@ -17,8 +17,10 @@ class ThreadTuner {
   // The work of one step (particle-steps) done at wall time `now` [s]. Returns the thread
   // count for the next step (changed only at the end of a slice).
   int after_step(double work, double now);
-  // Drops the slice under way (call after work that is not stepping: outputs, checkpoints).
-  void restart(double now);
+  // Leaves `seconds` of wall time out of the slice under way (work that is not stepping:
+  // outputs, checkpoints). The slice keeps its steps, so frequent outputs do not keep it
+  // from ever ending.
+  void exclude(double seconds);
 
   int threads() const { return current_; }
   bool active() const { return max_ > 1; }
@@ -34,6 +36,7 @@ class ThreadTuner {
     double steps = 0;  // steps run on it
     double work = 0, seconds = 0;
   };
+  void restart(double now);
   Count& stats(int threads) { return threads == 1 ? one_ : all_; }
   const Count& stats(int threads) const { return threads == 1 ? one_ : all_; }
   int other(int threads) const { return threads == 1 ? max_ : 1; }
