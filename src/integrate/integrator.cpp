@@ -1,7 +1,5 @@
 #include "integrate/integrator.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -149,18 +147,18 @@ double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce&
   {
     // Static splits over the threads (each disc's and body's update is its own, and a max and
     // a count do not depend on the split).
-    const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
     if (free_discs) {
-      const FreeDiscStep r = step_free_discs(n * t / threads, n * (t + 1) / threads, d.vx.data(), d.vy.data(),
+      const ItemRange discs = thread_share(n);
+      const FreeDiscStep r = step_free_discs(discs.begin, discs.end, d.vx.data(), d.vy.data(),
                                              d.omega.data(), d.x.data(), d.y.data(), d.theta.data(), force,
                                              d.inv_mass.data(), d.inv_inertia.data(), d.motion.data(),
                                              d.cluster.data(), x_ref, y_ref, damp, g.gx, g.gy, dt);
       free2 = r.max2;
       not_finite = r.not_finite;
     }
-    const std::ptrdiff_t end = nc * (t + 1) / threads;
-    for (std::ptrdiff_t b0 = nc * t / threads; b0 < end; b0 += kBodyBlock) {
-      const std::ptrdiff_t b1 = std::min(end, b0 + kBodyBlock);
+    const ItemRange bodies = thread_share(nc);
+    for (std::ptrdiff_t b0 = bodies.begin; b0 < bodies.end; b0 += kBodyBlock) {
+      const std::ptrdiff_t b1 = std::min(bodies.end, b0 + kBodyBlock);
       gather_cluster_forces(c, d, force, b0, b1);
       step_bodies(b0, b1, c.vx.data(), c.vy.data(), c.omega.data(), c.x.data(), c.y.data(), c.theta.data(),
                   c.rot_c.data(), c.rot_s.data(), c.fx.data(), c.fy.data(), c.torque.data(), c.inv_mass.data(),
@@ -169,9 +167,7 @@ double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce&
     }
   }
   // NaN counts as infinitely far: it forces a rebuild, where it is caught.
-  if (not_finite) return std::numeric_limits<double>::infinity();
-  const double moved = std::sqrt(std::max(free2, members2));
-  return moved == moved ? moved : std::numeric_limits<double>::infinity();
+  return not_finite ? std::numeric_limits<double>::infinity() : std::sqrt(std::max(free2, members2));
 }
 
 }  // namespace orogen

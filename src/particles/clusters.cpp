@@ -1,7 +1,5 @@
 #include "particles/clusters.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -130,8 +128,8 @@ double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, co
   // Threaded by the number of discs, like every loop of the step (a body's work is its discs').
 #pragma omp parallel reduction(max : max2) if (static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items())
   {
-    const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
-    max2 = place_cluster_discs(c, d, n * t / threads, n * (t + 1) / threads, x_ref, y_ref);
+    const ItemRange bodies = thread_share(n);
+    max2 = place_cluster_discs(c, d, bodies.begin, bodies.end, x_ref, y_ref);
   }
   return std::sqrt(max2);
 }

@@ -1,5 +1,7 @@
 #include "util/parallel.hpp"
 
+#include <omp.h>
+
 #include <cstdlib>
 #include <optional>
 
@@ -28,4 +30,9 @@ std::string parallel_environment_error() {
   return std::string("environment variable ") + kVariable + " = '" + std::getenv(kVariable) +
          "': must be a whole number >= 1 (unset: " + std::to_string(kMinParallelItems) + ")";
 }
+ItemRange thread_share(std::ptrdiff_t n) {
+  const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
+  return {n * t / threads, n * (t + 1) / threads};
+}
+
 }  // namespace orogen

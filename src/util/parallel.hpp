@@ -17,4 +17,11 @@ std::ptrdiff_t min_parallel_items();
 // when it is unset or valid. The program checks it at start; min_parallel_items() falls
 // back to kMinParallelItems for a bad value.
 std::string parallel_environment_error();
+
+// The calling thread's static share of the items [0, n) in an OpenMP team: contiguous, in
+// thread order (all of them outside a team).
+struct ItemRange {
+  std::ptrdiff_t begin, end;
+};
+ItemRange thread_share(std::ptrdiff_t n);
 }  // namespace orogen
