@@ -86,8 +86,13 @@ void relink_clusters(Clusters& c, Discs& d) {
   }
 }
 
-double place_cluster_discs(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrdiff_t last,
-                           const double* x_ref, const double* y_ref) {
+namespace {
+
+// Places the members of bodies [first, last); with kMeasure, returns the largest squared
+// distance of a member from its reference position.
+template <bool kMeasure>
+double place_members(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrdiff_t last,
+                     const double* __restrict x_ref, const double* __restrict y_ref) {
   // Plain pointers: through the vectors, every store would make the compiler reload every
   // array's address (a double store might change a vector's own pointer, as far as it knows).
   double* __restrict x = d.x.data();
@@ -103,6 +108,9 @@ double place_cluster_discs(const Clusters& c, Discs& d, std::ptrdiff_t first, st
   for (std::ptrdiff_t k = first; k < last; ++k) {
     const double cs = c.rot_c[k], sn = c.rot_s[k], cx = c.x[k], cy = c.y[k], cvx = c.vx[k], cvy = c.vy[k],
                  w = c.omega[k], th = c.theta[k];
+    // The body's own maximum first: one max per body on the chain carried across bodies
+    // (three in a row cost their latency each).
+    double body2 = 0;
     for (const auto i : members[k]) {
       if (i < 0) break;
       const double rx = cs * bdx[i] - sn * bdy[i];
@@ -113,13 +121,22 @@ double place_cluster_discs(const Clusters& c, Discs& d, std::ptrdiff_t first, st
       vy[i] = cvy + w * rx;
       theta[i] = th;
       omega[i] = w;
-      if (x_ref) {
-        const double dx = x[i] - x_ref[i], dy = y[i] - y_ref[i];
-        max2 = std::max(max2, dx * dx + dy * dy);
+      if constexpr (kMeasure) {
+        const double dx = cx + rx - x_ref[i], dy = cy + ry - y_ref[i];
+        body2 = std::max(body2, dx * dx + dy * dy);
       }
     }
+    max2 = std::max(max2, body2);
   }
   return max2;
+}
+
+}  // namespace
+
+double place_cluster_discs(const Clusters& c, Discs& d, std::ptrdiff_t first, std::ptrdiff_t last,
+                           const double* x_ref, const double* y_ref) {
+  return x_ref ? place_members<true>(c, d, first, last, x_ref, y_ref)
+               : place_members<false>(c, d, first, last, nullptr, nullptr);
 }
 
 double update_cluster_discs(const Clusters& c, Discs& d, const double* x_ref, const double* y_ref) {
