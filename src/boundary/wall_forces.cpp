@@ -1,13 +1,17 @@
 #include "boundary/wall_forces.hpp"
 
+#include <omp.h>
+
 #include <cmath>
+#include <utility>
 
 namespace orogen {
+namespace {
 
-void add_wall_forces(NeighborList& L, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
-                     double dt, std::vector<DiscForce>& forces) {
-  auto& wc = L.walls;
-  for (std::size_t k = 0; k < wc.size(); ++k) {
+// Wall contacts [begin, end): force, history and flags of each, added onto its disc.
+void contact_range(WallContacts& wc, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
+                   double dt, DiscForce* forces, std::size_t begin, std::size_t end) {
+  for (std::size_t k = begin; k < end; ++k) {
     const auto& w = walls[wc.wall[k]];
     const auto i = wc.disc[k];
     wc.touching[k] = 0;
@@ -63,6 +67,31 @@ void add_wall_forces(NeighborList& L, const Discs& d, const std::vector<Wall>& w
     forces[i].fx += fn * nx + ft * tx;
     forces[i].fy += fn * ny + ft * ty;
     forces[i].torque += -r * ft;
+  }
+}
+
+}  // namespace
+
+void add_wall_forces(NeighborList& L, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
+                     double dt, std::vector<DiscForce>& forces, const ThreadSplit& split) {
+  auto& wc = L.walls;
+  // The first contact at or after (wall w, disc i): contacts are in wall, then disc order.
+  auto first_at = [&](std::size_t w, std::ptrdiff_t i) {
+    std::size_t lo = 0, hi = wc.size();
+    const std::pair<std::size_t, std::ptrdiff_t> key{w, i};
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (std::pair<std::size_t, std::ptrdiff_t>{wc.wall[mid], wc.disc[mid]} < key) lo = mid + 1; else hi = mid;
+    }
+    return lo;
+  };
+#pragma omp parallel num_threads(split.threads()) if (split.threads() > 1)
+  {
+    // Each thread the contacts of its own discs, wall by wall: every disc still adds its wall
+    // forces in wall order, whatever the number of threads.
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      contact_range(wc, d, walls, law, dt, forces.data(), first_at(w, split.disc[t]), first_at(w, split.disc[t + 1]));
   }
 }
 

@@ -6,14 +6,15 @@
 #include "contact/contact_law.hpp"
 #include "contact/neighbor_list.hpp"
 #include "contact/pair_forces.hpp"
+#include "contact/thread_split.hpp"
 #include "particles/clusters.hpp"
 #include "particles/discs.hpp"
 
 namespace orogen {
 
-// Adds wall contact forces and torques to the discs, in wall-contact order (serial, so the
-// sums are the same for any thread count). Updates each contact's history and flags.
+// Adds wall contact forces and torques to the discs, each disc's in wall order (the sums are
+// the same for any thread count and split). Updates each contact's history and flags.
 void add_wall_forces(NeighborList& list, const Discs& discs, const std::vector<Wall>& walls, const ContactLaw& law,
-                     double dt, std::vector<DiscForce>& forces);
+                     double dt, std::vector<DiscForce>& forces, const ThreadSplit& split);
 
 }  // namespace orogen

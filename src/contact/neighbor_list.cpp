@@ -200,6 +200,14 @@ BuildStats build_neighbor_list(NeighborList& L, Discs& d, Clusters& c, const std
     }
   }
   L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
+  if (sort) {  // discs are in cell order: chunk k's stripes hold discs from its first cell on
+    L.chunk_disc.resize(static_cast<std::size_t>(chunks) + 1);
+    for (std::int64_t k = 0; k < chunks; ++k)
+      L.chunk_disc[static_cast<std::size_t>(k)] = cell_start[static_cast<std::size_t>(k * stripes_per_chunk * g.nv())];
+    L.chunk_disc.back() = static_cast<std::uint32_t>(n);
+  } else if (L.chunk_disc.size() != static_cast<std::size_t>(chunks) + 1) {
+    L.chunk_disc.clear();  // the grid changed since the last sort: no hint until the next
+  }
 
   // Wall contacts: every disc within reach of each enabled wall, in wall then disc order
   // (the distance test in parallel, the list in order).

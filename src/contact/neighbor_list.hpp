@@ -31,6 +31,11 @@ struct NeighborList {
   // chunks in parallel, then the odd ones, each disc summing its pairs in the same order
   // whatever the number of threads.
   std::vector<std::uint32_t> chunk_start;
+  // The first disc of each chunk's stripes, chunks + 1 entries, from the last build that put
+  // the discs in cell order (empty when unknown). Only a hint for cutting the discs between
+  // threads where the chunks are cut (ThreadSplit): results never depend on it, so it is not
+  // checkpointed.
+  std::vector<std::uint32_t> chunk_disc;
   // Wall contacts (walls are few; discs within the skin of each wall).
   WallContacts walls;
   std::vector<std::int64_t> wall_disc_id;

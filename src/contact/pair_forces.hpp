@@ -5,6 +5,7 @@
 
 #include "contact/contact_law.hpp"
 #include "contact/neighbor_list.hpp"
+#include "contact/thread_split.hpp"
 #include "particles/discs.hpp"
 
 namespace orogen {
@@ -20,10 +21,10 @@ struct PairScratch {
   std::vector<DiscForce> forces;
 };
 
-// Sets discs' force and torque to the sum of their contact forces, chunk by chunk (see
-// NeighborList::chunk_start): bitwise the same result for any number of threads.
-// Sets the scratch forces to the sum of the discs' contact forces.
+// Sets the scratch forces to the sum of the discs' contact forces, chunk by chunk (see
+// NeighborList::chunk_start), the chunks and discs cut between threads by `split`: bitwise the
+// same result for any number of threads and any split.
 void compute_pair_forces(NeighborList& list, const Discs& discs, const ContactLaw& law, double dt,
-                         PairScratch& scratch);
+                         PairScratch& scratch, const ThreadSplit& split);
 
 }  // namespace orogen

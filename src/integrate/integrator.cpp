@@ -4,7 +4,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include "util/parallel.hpp"
+
+#include <omp.h>
 
 namespace orogen {
 
@@ -132,33 +133,32 @@ void step_bodies(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx
 constexpr std::ptrdiff_t kBodyBlock = 256;
 
 double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt, const double* x_ref,
-                 const double* y_ref) {
-  const auto n = static_cast<std::ptrdiff_t>(d.size());
-  const auto nc = static_cast<std::ptrdiff_t>(c.size());
+                 const double* y_ref, const ThreadSplit& split) {
   const double damp = 1.0 - g.drag * dt;
-  // Discs outside clusters, if any (with none, the usual cluster packing, the bodies place
-  // every disc and that pass would be wasted).
-  const bool free_discs = std::find(d.cluster.begin(), d.cluster.end(), kNoCluster) != d.cluster.end();
   double free2 = 0, members2 = 0;
   std::int64_t not_finite = 0;
   // One thread team for the whole update: the free-disc pass and the body passes touch
   // different discs (members are left to their bodies), so no thread waits for another.
-#pragma omp parallel reduction(max : free2, members2) reduction(+ : not_finite) if (n > min_parallel_items())
+#pragma omp parallel num_threads(split.threads()) reduction(max : free2, members2) reduction(+ : not_finite) \
+    if (split.threads() > 1)
   {
-    // Static splits over the threads (each disc's and body's update is its own, and a max and
+    // Each thread on its own stretch (each disc's and body's update is its own, and a max and
     // a count do not depend on the split).
-    if (free_discs) {
-      const ItemRange discs = thread_share(n);
-      const FreeDiscStep r = step_free_discs(discs.begin, discs.end, d.vx.data(), d.vy.data(),
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    // Discs outside clusters in this stretch, if any (with none, the usual cluster packing,
+    // the bodies place every disc and that pass would be wasted).
+    const auto* cluster = d.cluster.data();
+    if (std::find(cluster + split.disc[t], cluster + split.disc[t + 1], kNoCluster) != cluster + split.disc[t + 1]) {
+      const FreeDiscStep r = step_free_discs(split.disc[t], split.disc[t + 1], d.vx.data(), d.vy.data(),
                                              d.omega.data(), d.x.data(), d.y.data(), d.theta.data(), force,
                                              d.inv_mass.data(), d.inv_inertia.data(), d.motion.data(),
                                              d.cluster.data(), x_ref, y_ref, damp, g.gx, g.gy, dt);
       free2 = r.max2;
       not_finite = r.not_finite;
     }
-    const ItemRange bodies = thread_share(nc);
-    for (std::ptrdiff_t b0 = bodies.begin; b0 < bodies.end; b0 += kBodyBlock) {
-      const std::ptrdiff_t b1 = std::min(bodies.end, b0 + kBodyBlock);
+    const std::ptrdiff_t body_end = split.body[t + 1];
+    for (std::ptrdiff_t b0 = split.body[t]; b0 < body_end; b0 += kBodyBlock) {
+      const std::ptrdiff_t b1 = std::min(body_end, b0 + kBodyBlock);
       gather_cluster_forces(c, d, force, b0, b1);
       step_bodies(b0, b1, c.vx.data(), c.vy.data(), c.omega.data(), c.x.data(), c.y.data(), c.theta.data(),
                   c.rot_c.data(), c.rot_s.data(), c.fx.data(), c.fy.data(), c.torque.data(), c.inv_mass.data(),

@@ -2,6 +2,7 @@
 // Semi-implicit (symplectic) Euler, as in the thesis (MODEL §4): velocities from forces,
 // then positions from the new velocities, for free discs and for rigid cluster bodies.
 #include "contact/pair_forces.hpp"
+#include "contact/thread_split.hpp"
 #include "particles/clusters.hpp"
 #include "particles/discs.hpp"
 
@@ -16,8 +17,9 @@ struct BodyForce {
 // discs on their bodies. Kinematic discs and bodies move with their imposed velocity.
 // Returns the largest distance of a disc from its reference position (x_ref, y_ref by disc
 // index, the positions at the last neighbour-list build): measured here, where the positions
-// are written anyway, rather than in a pass of its own.
+// are written anyway, rather than in a pass of its own. Discs and bodies are cut between
+// threads by `split`.
 double integrate(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body, double dt,
-                 const double* x_ref, const double* y_ref);
+                 const double* x_ref, const double* y_ref, const ThreadSplit& split);
 
 }  // namespace orogen

@@ -52,9 +52,11 @@ void World::advance() {
     const bool sort = sort_every > 0 && neighbors.builds % static_cast<std::uint64_t>(sort_every) == 0;
     check_build(build_neighbor_list(neighbors, discs, clusters, walls, law, dt, sort), *this);
   }
-  compute_pair_forces(neighbors, discs, law, dt, scratch);
-  add_wall_forces(neighbors, discs, walls, law, dt, scratch.forces);
-  moved = integrate(discs, clusters, scratch.forces.data(), body, dt, neighbors.x_ref.data(), neighbors.y_ref.data());
+  const ThreadSplit split = split_threads(neighbors, discs, clusters, step_threads(discs.size()));
+  compute_pair_forces(neighbors, discs, law, dt, scratch, split);
+  add_wall_forces(neighbors, discs, walls, law, dt, scratch.forces, split);
+  moved = integrate(discs, clusters, scratch.forces.data(), body, dt, neighbors.x_ref.data(), neighbors.y_ref.data(),
+                    split);
   for (auto& w : walls) {
     w.ax += w.vx * dt; w.bx += w.vx * dt;
     w.ay += w.vy * dt; w.by += w.vy * dt;
