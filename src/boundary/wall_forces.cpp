@@ -72,8 +72,8 @@ void contact_range(WallContacts& wc, const Discs& d, const std::vector<Wall>& wa
 
 }  // namespace
 
-void add_wall_forces(NeighborList& L, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
-                     double dt, std::vector<DiscForce>& forces, const ThreadSplit& split) {
+void wall_forces_share(NeighborList& L, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
+                       double dt, DiscForce* forces, const ThreadSplit& split, std::size_t t) {
   auto& wc = L.walls;
   // The first contact at or after (wall w, disc i): contacts are in wall, then disc order.
   auto first_at = [&](std::size_t w, std::ptrdiff_t i) {
@@ -85,14 +85,16 @@ void add_wall_forces(NeighborList& L, const Discs& d, const std::vector<Wall>& w
     }
     return lo;
   };
+  // The contacts of thread t's own discs, wall by wall: every disc still adds its wall forces
+  // in wall order, whatever the number of threads.
+  for (std::size_t w = 0; w < walls.size(); ++w)
+    contact_range(wc, d, walls, law, dt, forces, first_at(w, split.disc[t]), first_at(w, split.disc[t + 1]));
+}
+
+void add_wall_forces(NeighborList& L, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
+                     double dt, std::vector<DiscForce>& forces, const ThreadSplit& split) {
 #pragma omp parallel num_threads(split.threads()) if (split.threads() > 1)
-  {
-    // Each thread the contacts of its own discs, wall by wall: every disc still adds its wall
-    // forces in wall order, whatever the number of threads.
-    const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    for (std::size_t w = 0; w < walls.size(); ++w)
-      contact_range(wc, d, walls, law, dt, forces.data(), first_at(w, split.disc[t]), first_at(w, split.disc[t + 1]));
-  }
+  wall_forces_share(L, d, walls, law, dt, forces.data(), split, static_cast<std::size_t>(omp_get_thread_num()));
 }
 
 }  // namespace orogen

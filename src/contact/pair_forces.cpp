@@ -65,30 +65,28 @@ void chunk_forces(const PairView& L, const DiscView& d, const ContactLaw& law, d
 
 }  // namespace
 
-void compute_pair_forces(NeighborList& L, const Discs& discs, const ContactLaw& law, double dt, PairScratch& s,
-                         const ThreadSplit& split) {
+void pair_forces_share(NeighborList& L, const Discs& discs, const ContactLaw& law, double dt, DiscForce* force,
+                       const ThreadSplit& split, std::size_t t) {
   const DiscView d{discs.x.data(), discs.y.data(), discs.vx.data(), discs.vy.data(), discs.omega.data(),
                    discs.radius.data()};
   const PairView pairs{L.first.data(), L.second.data(), L.gamma_n.data(), L.xi.data()};
-  s.forces.resize(discs.size());
-  DiscForce* force = s.forces.data();
-  // One thread team for the stage: clear, even chunks, odd chunks, each thread on its own
-  // stretch of the domain (ThreadSplit).
-#pragma omp parallel num_threads(split.threads()) if (split.threads() > 1)
-  {
-    const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    for (std::ptrdiff_t i = split.disc[t]; i < split.disc[t + 1]; ++i) force[i] = {0.0, 0.0, 0.0};
+  for (std::ptrdiff_t i = split.disc[t]; i < split.disc[t + 1]; ++i) force[i] = {0.0, 0.0, 0.0};
 #pragma omp barrier
-    // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in
-    // parallel without races, and every disc sums its pairs in the same order for any number
-    // of threads.
-    const std::ptrdiff_t begin = split.chunk[t], end = split.chunk[t + 1];
-    for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
-      for (std::ptrdiff_t k = begin + ((begin & 1) != parity); k < end; k += 2)
-        chunk_forces(pairs, d, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
+  // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in parallel
+  // without races, and every disc sums its pairs in the same order for any number of threads.
+  const std::ptrdiff_t begin = split.chunk[t], end = split.chunk[t + 1];
+  for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
+    for (std::ptrdiff_t k = begin + ((begin & 1) != parity); k < end; k += 2)
+      chunk_forces(pairs, d, law, dt, L.chunk_start[k], L.chunk_start[k + 1], force);
 #pragma omp barrier
-    }
   }
+}
+
+void compute_pair_forces(NeighborList& L, const Discs& discs, const ContactLaw& law, double dt, PairScratch& s,
+                         const ThreadSplit& split) {
+  s.forces.resize(discs.size());
+#pragma omp parallel num_threads(split.threads()) if (split.threads() > 1)
+  pair_forces_share(L, discs, law, dt, s.forces.data(), split, static_cast<std::size_t>(omp_get_thread_num()));
 }
 
 }  // namespace orogen

@@ -1,5 +1,6 @@
 #pragma once
 // Disc-disc contact forces over the Verlet list.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -26,5 +27,12 @@ struct PairScratch {
 // same result for any number of threads and any split.
 void compute_pair_forces(NeighborList& list, const Discs& discs, const ContactLaw& law, double dt,
                          PairScratch& scratch, const ThreadSplit& split);
+
+// Thread t's share of compute_pair_forces, for a step that runs all its stages in one thread
+// team (World::advance): every thread of the team calls it, `forces` already sized to the
+// discs; it clears thread t's discs, then sums its even chunks, then its odd ones, with the
+// team's barriers between (so the forces are whole when it returns).
+void pair_forces_share(NeighborList& list, const Discs& discs, const ContactLaw& law, double dt, DiscForce* forces,
+                       const ThreadSplit& split, std::size_t t);
 
 }  // namespace orogen

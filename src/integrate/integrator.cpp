@@ -36,16 +36,11 @@ void gather_cluster_forces(Clusters& c, const Discs& d, const DiscForce* __restr
   }
 }
 
-struct FreeDiscStep {
-  double max2 = 0;              // largest squared displacement from the reference
-  std::int64_t not_finite = 0;  // NaN displacements, counted apart so that the max stays a max
-};
-
 // Free discs [begin, end): semi-implicit Euler without branches, so that it vectorises (the
 // pointers are restrict parameters here: captured into an OpenMP region they lose it). Cluster
 // discs in the range are left as they are: gather_cluster_forces reads their positions (the
 // lever arms of their forces) before their bodies place them on the new pose.
-FreeDiscStep step_free_discs(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx,
+Displacement step_free_discs(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx,
                              double* __restrict vy, double* __restrict omega, double* __restrict x,
                              double* __restrict y, double* __restrict theta, const DiscForce* __restrict force,
                              const double* __restrict inv_m, const double* __restrict inv_i,
@@ -132,42 +127,49 @@ void step_bodies(std::ptrdiff_t begin, std::ptrdiff_t end, double* __restrict vx
 // stage, while each stage stays a loop of its own (the body step vectorises).
 constexpr std::ptrdiff_t kBodyBlock = 256;
 
+Displacement integrate_share(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt,
+                             const double* x_ref, const double* y_ref, const ThreadSplit& split, std::size_t t) {
+  const double damp = 1.0 - g.drag * dt;
+  Displacement moved;
+  // The free-disc pass and the body passes touch different discs (members are left to their
+  // bodies), and each disc's and body's update is its own: no thread waits for another.
+  // Discs outside clusters in this stretch, if any (with none, the usual cluster packing, the
+  // bodies place every disc and that pass would be wasted).
+  const auto* cluster = d.cluster.data();
+  if (std::find(cluster + split.disc[t], cluster + split.disc[t + 1], kNoCluster) != cluster + split.disc[t + 1])
+    moved = step_free_discs(split.disc[t], split.disc[t + 1], d.vx.data(), d.vy.data(), d.omega.data(), d.x.data(),
+                            d.y.data(), d.theta.data(), force, d.inv_mass.data(), d.inv_inertia.data(),
+                            d.motion.data(), d.cluster.data(), x_ref, y_ref, damp, g.gx, g.gy, dt);
+  const std::ptrdiff_t body_end = split.body[t + 1];
+  for (std::ptrdiff_t b0 = split.body[t]; b0 < body_end; b0 += kBodyBlock) {
+    const std::ptrdiff_t b1 = std::min(body_end, b0 + kBodyBlock);
+    gather_cluster_forces(c, d, force, b0, b1);
+    step_bodies(b0, b1, c.vx.data(), c.vy.data(), c.omega.data(), c.x.data(), c.y.data(), c.theta.data(),
+                c.rot_c.data(), c.rot_s.data(), c.fx.data(), c.fy.data(), c.torque.data(), c.inv_mass.data(),
+                c.inv_inertia.data(), c.motion.data(), damp, g.gx, g.gy, dt);
+    moved.max2 = std::max(moved.max2, place_cluster_discs(c, d, b0, b1, x_ref, y_ref));
+  }
+  return moved;
+}
+
 double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt, const double* x_ref,
                  const double* y_ref, const ThreadSplit& split) {
-  const double damp = 1.0 - g.drag * dt;
-  double free2 = 0, members2 = 0;
+  double max2 = 0;
   std::int64_t not_finite = 0;
-  // One thread team for the whole update: the free-disc pass and the body passes touch
-  // different discs (members are left to their bodies), so no thread waits for another.
-#pragma omp parallel num_threads(split.threads()) reduction(max : free2, members2) reduction(+ : not_finite) \
+#pragma omp parallel num_threads(split.threads()) reduction(max : max2) reduction(+ : not_finite) \
     if (split.threads() > 1)
   {
-    // Each thread on its own stretch (each disc's and body's update is its own, and a max and
-    // a count do not depend on the split).
-    const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    // Discs outside clusters in this stretch, if any (with none, the usual cluster packing,
-    // the bodies place every disc and that pass would be wasted).
-    const auto* cluster = d.cluster.data();
-    if (std::find(cluster + split.disc[t], cluster + split.disc[t + 1], kNoCluster) != cluster + split.disc[t + 1]) {
-      const FreeDiscStep r = step_free_discs(split.disc[t], split.disc[t + 1], d.vx.data(), d.vy.data(),
-                                             d.omega.data(), d.x.data(), d.y.data(), d.theta.data(), force,
-                                             d.inv_mass.data(), d.inv_inertia.data(), d.motion.data(),
-                                             d.cluster.data(), x_ref, y_ref, damp, g.gx, g.gy, dt);
-      free2 = r.max2;
-      not_finite = r.not_finite;
-    }
-    const std::ptrdiff_t body_end = split.body[t + 1];
-    for (std::ptrdiff_t b0 = split.body[t]; b0 < body_end; b0 += kBodyBlock) {
-      const std::ptrdiff_t b1 = std::min(body_end, b0 + kBodyBlock);
-      gather_cluster_forces(c, d, force, b0, b1);
-      step_bodies(b0, b1, c.vx.data(), c.vy.data(), c.omega.data(), c.x.data(), c.y.data(), c.theta.data(),
-                  c.rot_c.data(), c.rot_s.data(), c.fx.data(), c.fy.data(), c.torque.data(), c.inv_mass.data(),
-                  c.inv_inertia.data(), c.motion.data(), damp, g.gx, g.gy, dt);
-      members2 = std::max(members2, place_cluster_discs(c, d, b0, b1, x_ref, y_ref));
-    }
+    const Displacement r = integrate_share(d, c, force, g, dt, x_ref, y_ref, split,
+                                           static_cast<std::size_t>(omp_get_thread_num()));
+    max2 = r.max2;
+    not_finite = r.not_finite;
   }
+  return Displacement{max2, not_finite}.distance();
+}
+
+double Displacement::distance() const {
   // NaN counts as infinitely far: it forces a rebuild, where it is caught.
-  return not_finite ? std::numeric_limits<double>::infinity() : std::sqrt(std::max(free2, members2));
+  return not_finite ? std::numeric_limits<double>::infinity() : std::sqrt(max2);
 }
 
 }  // namespace orogen

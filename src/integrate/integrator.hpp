@@ -1,6 +1,9 @@
 #pragma once
 // Semi-implicit (symplectic) Euler, as in the thesis (MODEL §4): velocities from forces,
 // then positions from the new velocities, for free discs and for rigid cluster bodies.
+#include <cstddef>
+#include <cstdint>
+
 #include "contact/pair_forces.hpp"
 #include "contact/thread_split.hpp"
 #include "particles/clusters.hpp"
@@ -21,5 +24,18 @@ struct BodyForce {
 // threads by `split`.
 double integrate(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body, double dt,
                  const double* x_ref, const double* y_ref, const ThreadSplit& split);
+
+// How far the discs of a thread's share moved from their reference positions.
+struct Displacement {
+  double max2 = 0;              // largest squared distance
+  std::int64_t not_finite = 0;  // NaN distances, counted apart so that the max stays a max
+  double distance() const;      // sqrt(max2), or infinity if any was NaN
+};
+
+// Thread t's share of integrate (its free discs and bodies), for a step run in one thread
+// team; no barrier. The largest displacement is the max over the threads' shares.
+Displacement integrate_share(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body,
+                             double dt, const double* x_ref, const double* y_ref, const ThreadSplit& split,
+                             std::size_t t);
 
 }  // namespace orogen

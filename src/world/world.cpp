@@ -1,6 +1,7 @@
 #include "world/world.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -53,10 +54,27 @@ void World::advance() {
     check_build(build_neighbor_list(neighbors, discs, clusters, walls, law, dt, sort), *this);
   }
   const ThreadSplit split = split_threads(neighbors, discs, clusters, step_threads(discs.size()));
-  compute_pair_forces(neighbors, discs, law, dt, scratch, split);
-  add_wall_forces(neighbors, discs, walls, law, dt, scratch.forces, split);
-  moved = integrate(discs, clusters, scratch.forces.data(), body, dt, neighbors.x_ref.data(), neighbors.y_ref.data(),
-                    split);
+  scratch.forces.resize(discs.size());
+  DiscForce* forces = scratch.forces.data();
+  double max2 = 0;
+  std::int64_t not_finite = 0;
+  // One thread team for the whole step (a team per stage cost a fork and a join each), each
+  // thread on its own stretch of the domain.
+#pragma omp parallel num_threads(split.threads()) reduction(max : max2) reduction(+ : not_finite) \
+    if (split.threads() > 1)
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    pair_forces_share(neighbors, discs, law, dt, forces, split, t);
+    wall_forces_share(neighbors, discs, walls, law, dt, forces, split, t);
+    // A body's members may lie in the next thread's stretch: their forces must be whole before
+    // it gathers them, and their wall contacts read before it moves them.
+#pragma omp barrier
+    const Displacement r =
+        integrate_share(discs, clusters, forces, body, dt, neighbors.x_ref.data(), neighbors.y_ref.data(), split, t);
+    max2 = r.max2;
+    not_finite = r.not_finite;
+  }
+  moved = Displacement{max2, not_finite}.distance();
   for (auto& w : walls) {
     w.ax += w.vx * dt; w.bx += w.vx * dt;
     w.ay += w.vy * dt; w.by += w.vy * dt;
