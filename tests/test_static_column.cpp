@@ -1,6 +1,8 @@
 // A column of n discs resting on a wall: the bottom overlap carries the whole weight.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "world_fixtures.hpp"
 
 namespace orogen {
@@ -32,6 +34,32 @@ TEST(StaticColumn, BottomOverlapEqualsWeightOverStiffness) {
       EXPECT_NEAR(contact_overlap, load, 0.02 * load) << "n = " << n << ", contact " << k;
     }
   }
+}
+
+// A disc squeezed slowly between two kinematic discs until they overlap by half a radius: the
+// run stops, and names a load the contact cannot hold (not a collision or a fast boundary).
+TEST(StaticColumn, SlowSqueezeStopsTheRunNamingTheLoad) {
+  World w;
+  w.law.kn = 100;
+  w.law.ks = 50;
+  w.body.gx = 0;
+  w.body.gy = 0;
+  const auto fixed = w.add_disc(0.0, 0.0, 0.5);
+  w.add_disc(1.0, 0.0, 0.5);
+  const auto pusher = w.add_disc(2.0, 0.0, 0.5);
+  w.discs.motion[fixed] = w.discs.motion[pusher] = static_cast<std::uint8_t>(Motion::Kinematic);
+  w.discs.vx[pusher] = -0.01;
+  w.dt = 0.5 * w.stable_dt();
+  std::string message;
+  try {
+    for (int s = 0; s < 100000; ++s) w.advance();
+  } catch (const InstabilityError& e) {
+    message = e.what();
+  }
+  ASSERT_FALSE(message.empty()) << "the squeeze never stopped the run";
+  EXPECT_NE(message.find("overlap by 5"), std::string::npos) << message;
+  EXPECT_NE(message.find("a load too large for k_n = 100"), std::string::npos) << message;
+  EXPECT_EQ(message.find("weight of"), std::string::npos) << message;  // no gravity here
 }
 
 }  // namespace

@@ -13,8 +13,9 @@
 namespace orogen {
 namespace {
 
-// The most likely reason for a blow-up, from the time step, the stiffness and the weights.
-std::string likely_cause(const World& w) {
+// The most likely reason for a blow-up, from the time step, the stiffness, the weights and the
+// worst pair (discs a and b).
+std::string likely_cause(const World& w, std::size_t a, std::size_t b) {
   if (w.dt > w.stable_dt())
     return fmt::format("time step dt = {:.3g} above the stability limit {:.3g} for k_n = {:.3g}", w.dt,
                        w.stable_dt(), w.law.kn);
@@ -26,6 +27,21 @@ std::string likely_cause(const World& w) {
     return fmt::format("k_n = {:.3g} is too soft for the load: one disc's own weight overlaps it by {:.1f}% of its "
                        "radius, a pile of them far more (raise contact.kn)",
                        w.law.kn, 100 * sag);
+  // An overlap built up over many steps is a load the contact cannot hold, not a collision:
+  // e.g. material driven into a corner of kinematic (pinned) discs.
+  const auto& d = w.discs;
+  const double dx = d.x[b] - d.x[a], dy = d.y[b] - d.y[a], dist = std::hypot(dx, dy);
+  const double overlap = d.radius[a] + d.radius[b] - dist;
+  const double closing = dist > 0 ? -((d.vx[b] - d.vx[a]) * dx + (d.vy[b] - d.vy[a]) * dy) / dist : 0.0;
+  if (closing * 1000 * w.dt < overlap) {
+    const double force = w.law.kn * overlap;
+    const double weight = 0.5 * (d.mass[a] + d.mass[b]) * std::hypot(w.body.gx, w.body.gy);
+    const std::string as_weight = weight > 0 ? fmt::format(" (the weight of {:.0f} discs)", force / weight) : "";
+    return fmt::format("a load too large for k_n = {:.3g}: the contact carries k_n x overlap = {:.3g}{} and closes "
+                       "at only {:.2g} per unit time, so the overlap grew over thousands of steps (raise contact.kn; "
+                       "a stiffer contact lowers the largest wedge.speed of eq. 4.3)",
+                       w.law.kn, force, as_weight, closing);
+  }
   return fmt::format("an imposed velocity (moving wall, plate, kinematic discs) too fast for k_n = {:.3g} at "
                      "dt = {:.3g}, or a collision too violent for them",
                      w.law.kn, w.dt);
@@ -42,7 +58,8 @@ void check_build(const BuildStats& s, const World& w) {
     throw InstabilityError(fmt::format(
         "simulation became unstable at step {} (t = {:.6g}): discs {} and {} overlap by {:.0f}% of the smaller "
         "radius. Likely cause: {}",
-        w.step, w.time, w.discs.id[s.worst_a], w.discs.id[s.worst_b], 100 * s.max_overlap_ratio, likely_cause(w)));
+        w.step, w.time, w.discs.id[s.worst_a], w.discs.id[s.worst_b], 100 * s.max_overlap_ratio,
+        likely_cause(w, s.worst_a, s.worst_b)));
 }
 
 }  // namespace
