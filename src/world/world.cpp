@@ -70,16 +70,19 @@ void World::advance() {
     const bool sort = sort_every > 0 && neighbors.builds % static_cast<std::uint64_t>(sort_every) == 0;
     check_build(build_neighbor_list(neighbors, discs, clusters, walls, law, dt, sort), *this);
   }
-  const ThreadSplit split = split_threads(neighbors, discs, clusters, step_threads(discs.size()));
   scratch.forces.resize(discs.size());
   DiscForce* forces = scratch.forces.data();
+  ThreadSplit split;
   double max2 = 0;
   std::int64_t not_finite = 0;
   // One thread team for the whole step (a team per stage cost a fork and a join each), each
   // thread on its own stretch of the domain.
-#pragma omp parallel num_threads(split.threads()) reduction(max : max2) reduction(+ : not_finite) \
-    if (split.threads() > 1)
+  const int threads = step_threads(discs.size());
+#pragma omp parallel num_threads(threads) reduction(max : max2) reduction(+ : not_finite) if (threads > 1)
   {
+    // Cut for the team actually given (OMP_DYNAMIC may give fewer threads than asked for).
+#pragma omp single
+    split = split_threads(neighbors, discs, clusters, omp_get_num_threads());
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     pair_forces_share(neighbors, discs, law, dt, forces, split, t);
     wall_forces_share(neighbors, discs, walls, law, dt, forces, split, t);
