@@ -21,35 +21,48 @@ struct ContactBlock {
   alignas(64) std::int64_t touching[kContactBlock];  // as wide as a double: one vector type
 };
 
+// The contact law for one pair, without branches (the lanes of a vector loop): force on the
+// second disc, tangential force and new history; all zero for a pair that does not touch.
+struct ContactLane {
+  double fx, fy, ft, xi;
+  bool touching;
+};
+
+inline ContactLane contact_lane(double dx, double dy, double ri, double rj, double dvx, double dvy, double wi,
+                                double wj, double gn, double gs, double xi_old, double kn, double ks, double mu,
+                                double dt) {
+  const double dist2 = dx * dx + dy * dy;
+  const double rsum = ri + rj;
+  const bool touching = dist2 < rsum * rsum;
+  const double dist = std::sqrt(dist2);
+  const double inv = 1.0 / dist;
+  const double nx = dx * inv, ny = dy * inv;
+  const double tx = -ny, ty = nx;
+  const double delta = rsum - dist;
+  const double rot = wi * ri + wj * rj;
+  const double vn = dvx * nx + dvy * ny;
+  const double vt = dvx * tx + dvy * ty - rot;
+  double fn = kn * delta - gn * vn;
+  fn = fn < 0 ? 0.0 : fn;
+  double xi = xi_old + vt * dt;
+  double ft = -ks * xi - gs * vt;
+  const double limit = mu * fn;
+  const bool slip = std::fabs(ft) > limit;
+  const double ft_limit = std::copysign(limit, ft);
+  const double xi_limit = -ft_limit / ks;  // computed unconditionally: no branch to vectorise
+  ft = slip ? ft_limit : ft;
+  xi = slip ? xi_limit : xi;
+  return {touching ? fn * nx + ft * tx : 0.0, touching ? fn * ny + ft * ty : 0.0, touching ? ft : 0.0,
+          touching ? xi : 0.0, touching};
+}
+
 inline void contact_forces_block(ContactBlock& b, int count, double kn, double ks, double mu, double dt) {
 #pragma omp simd
   for (int k = 0; k < count; ++k) {
-    const double dist2 = b.dx[k] * b.dx[k] + b.dy[k] * b.dy[k];
-    const double rsum = b.ri[k] + b.rj[k];
-    const bool touching = dist2 < rsum * rsum;
-    const double dist = std::sqrt(dist2);
-    const double inv = 1.0 / dist;
-    const double nx = b.dx[k] * inv, ny = b.dy[k] * inv;
-    const double tx = -ny, ty = nx;
-    const double delta = rsum - dist;
-    const double rot = b.wi[k] * b.ri[k] + b.wj[k] * b.rj[k];
-    const double vn = b.dvx[k] * nx + b.dvy[k] * ny;
-    const double vt = b.dvx[k] * tx + b.dvy[k] * ty - rot;
-    double fn = kn * delta - b.gn[k] * vn;
-    fn = fn < 0 ? 0.0 : fn;
-    double xi = b.xi[k] + vt * dt;
-    double ft = -ks * xi - b.gs[k] * vt;
-    const double limit = mu * fn;
-    const bool slip = std::fabs(ft) > limit;
-    const double ft_limit = std::copysign(limit, ft);
-    const double xi_limit = -ft_limit / ks;  // computed unconditionally: no branch to vectorise
-    ft = slip ? ft_limit : ft;
-    xi = slip ? xi_limit : xi;
-    b.fx[k] = touching ? fn * nx + ft * tx : 0.0;
-    b.fy[k] = touching ? fn * ny + ft * ty : 0.0;
-    b.ft[k] = touching ? ft : 0.0;
-    b.xi[k] = touching ? xi : 0.0;
-    b.touching[k] = touching;
+    const ContactLane c = contact_lane(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k], b.wj[k],
+                                       b.gn[k], b.gs[k], b.xi[k], kn, ks, mu, dt);
+    b.fx[k] = c.fx; b.fy[k] = c.fy; b.ft[k] = c.ft; b.xi[k] = c.xi;
+    b.touching[k] = c.touching;
   }
 }
 
