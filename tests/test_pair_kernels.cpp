@@ -6,8 +6,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "contact/pair_forces.hpp"
-#include "contact/thread_split.hpp"
+#include "contact/neighbor_list.hpp"
 #include "util/random.hpp"
 #include "world_fixtures.hpp"
 
@@ -34,14 +33,16 @@ World falling_heap(double skin) {
   return w;
 }
 
-// The disc forces and pair histories of one force pass, with every chunk taken the given way.
+// The disc forces, pair histories and disc states after one step's forces and update, with
+// every chunk taken the given way.
 std::vector<double> forces_with(World w, bool dense) {
   std::fill(w.neighbors.chunk_dense.begin(), w.neighbors.chunk_dense.end(), dense);
-  const ThreadSplit split = split_threads(w.neighbors, w.discs, w.clusters, 1);
-  compute_pair_forces(w.neighbors, w.discs, w.law, w.dt, w.scratch, split);
+  w.step_stages();
   std::vector<double> out;
   for (const auto& f : w.scratch.forces) out.insert(out.end(), {f.fx, f.fy, f.torque});
   out.insert(out.end(), w.neighbors.xi.begin(), w.neighbors.xi.end());
+  for (const auto* a : {&w.discs.x, &w.discs.y, &w.discs.vx, &w.discs.vy, &w.discs.omega})
+    out.insert(out.end(), a->begin(), a->end());
   return out;
 }
 

@@ -5,9 +5,7 @@
 #include <array>
 #include <cstring>
 
-#include "boundary/wall_forces.hpp"
 #include "contact/thread_split.hpp"
-#include "integrate/integrator.hpp"
 #include "util/random.hpp"
 #include "world_fixtures.hpp"
 
@@ -47,10 +45,7 @@ World mixed_heap() {
 
 // One step's forces and update with the given split; the disc state after it.
 std::vector<double> step_with(World w, const ThreadSplit& split) {
-  compute_pair_forces(w.neighbors, w.discs, w.law, w.dt, w.scratch, split);
-  add_wall_forces(w.neighbors, w.discs, w.walls, w.law, w.dt, w.scratch.forces, split);
-  integrate(w.discs, w.clusters, w.scratch.forces.data(), w.body, w.dt, w.neighbors.x_ref.data(),
-            w.neighbors.y_ref.data(), split);
+  w.step_stages(&split);
   std::vector<double> state;
   for (const auto* a : {&w.discs.x, &w.discs.y, &w.discs.vx, &w.discs.vy, &w.discs.omega, &w.discs.theta})
     state.insert(state.end(), a->begin(), a->end());

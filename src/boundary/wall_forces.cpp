@@ -1,7 +1,5 @@
 #include "boundary/wall_forces.hpp"
 
-#include <omp.h>
-
 #include <cmath>
 #include <utility>
 
@@ -89,12 +87,6 @@ void wall_forces_share(NeighborList& L, const Discs& d, const std::vector<Wall>&
   // in wall order, whatever the number of threads.
   for (std::size_t w = 0; w < walls.size(); ++w)
     contact_range(wc, d, walls, law, dt, forces, first_at(w, split.disc[t]), first_at(w, split.disc[t + 1]));
-}
-
-void add_wall_forces(NeighborList& L, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
-                     double dt, std::vector<DiscForce>& forces, const ThreadSplit& split) {
-#pragma omp parallel num_threads(split.threads()) if (split.threads() > 1)
-  wall_forces_share(L, d, walls, law, dt, forces.data(), split, static_cast<std::size_t>(omp_get_thread_num()));
 }
 
 }  // namespace orogen

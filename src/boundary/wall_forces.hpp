@@ -13,13 +13,9 @@
 
 namespace orogen {
 
-// Adds wall contact forces and torques to the discs, each disc's in wall order (the sums are
-// the same for any thread count and split). Updates each contact's history and flags.
-void add_wall_forces(NeighborList& list, const Discs& discs, const std::vector<Wall>& walls, const ContactLaw& law,
-                     double dt, std::vector<DiscForce>& forces, const ThreadSplit& split);
-
-// Thread t's share of add_wall_forces (the wall contacts of its discs), for a step run in one
-// thread team; no barrier.
+// Adds the wall contact forces and torques of thread t's discs (World::step_stages), each
+// disc's in wall order (the sums are the same for any thread count and split). Updates each
+// contact's history and flags. No barrier.
 void wall_forces_share(NeighborList& list, const Discs& discs, const std::vector<Wall>& walls, const ContactLaw& law,
                        double dt, DiscForce* forces, const ThreadSplit& split, std::size_t t);
 

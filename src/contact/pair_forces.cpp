@@ -1,7 +1,5 @@
 #include "contact/pair_forces.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 
 #include "contact/contact_block.hpp"
@@ -122,13 +120,6 @@ void pair_forces_share(NeighborList& L, const Discs& discs, const ContactLaw& la
     }
 #pragma omp barrier
   }
-}
-
-void compute_pair_forces(NeighborList& L, const Discs& discs, const ContactLaw& law, double dt, PairScratch& s,
-                         const ThreadSplit& split) {
-  s.forces.resize(discs.size());
-#pragma omp parallel num_threads(split.threads()) if (split.threads() > 1)
-  pair_forces_share(L, discs, law, dt, s.forces.data(), split, static_cast<std::size_t>(omp_get_thread_num()));
 }
 
 }  // namespace orogen

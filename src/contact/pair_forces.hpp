@@ -22,16 +22,12 @@ struct PairScratch {
   std::vector<DiscForce> forces;
 };
 
-// Sets the scratch forces to the sum of the discs' contact forces, chunk by chunk (see
-// NeighborList::chunk_start), the chunks and discs cut between threads by `split`: bitwise the
-// same result for any number of threads and any split.
-void compute_pair_forces(NeighborList& list, const Discs& discs, const ContactLaw& law, double dt,
-                         PairScratch& scratch, const ThreadSplit& split);
-
-// Thread t's share of compute_pair_forces, for a step that runs all its stages in one thread
-// team (World::advance): every thread of the team calls it, `forces` already sized to the
-// discs; it clears thread t's discs, then sums its even chunks, then its odd ones, with the
-// team's barriers between (so the forces are whole when it returns).
+// Sets the forces to the sum of the discs' contact forces, chunk by chunk (see
+// NeighborList::chunk_start), the chunks and discs cut between the threads of a team by `split`:
+// bitwise the same result for any number of threads and any split. Every thread t of the team
+// (World::step_stages) calls it, `forces` already sized to the discs; it clears thread t's
+// discs, then sums its even chunks, then its odd ones, with the team's barriers between (so the
+// forces are whole when it returns).
 void pair_forces_share(NeighborList& list, const Discs& discs, const ContactLaw& law, double dt, DiscForce* forces,
                        const ThreadSplit& split, std::size_t t);
 

@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <limits>
 
-#include <omp.h>
 
 namespace orogen {
 
@@ -150,21 +149,6 @@ Displacement integrate_share(Discs& d, Clusters& c, const DiscForce* force, cons
     moved.max2 = std::max(moved.max2, place_cluster_discs(c, d, b0, b1, x_ref, y_ref));
   }
   return moved;
-}
-
-double integrate(Discs& d, Clusters& c, const DiscForce* force, const BodyForce& g, double dt, const double* x_ref,
-                 const double* y_ref, const ThreadSplit& split) {
-  double max2 = 0;
-  std::int64_t not_finite = 0;
-#pragma omp parallel num_threads(split.threads()) reduction(max : max2) reduction(+ : not_finite) \
-    if (split.threads() > 1)
-  {
-    const Displacement r = integrate_share(d, c, force, g, dt, x_ref, y_ref, split,
-                                           static_cast<std::size_t>(omp_get_thread_num()));
-    max2 = r.max2;
-    not_finite = r.not_finite;
-  }
-  return Displacement{max2, not_finite}.distance();
 }
 
 double Displacement::distance() const {

@@ -16,15 +16,6 @@ struct BodyForce {
   double drag = 0.0;           // extra viscous drag rate (1/time), used only while settling
 };
 
-// Advances free discs and cluster bodies by dt under the given disc forces, then places member
-// discs on their bodies. Kinematic discs and bodies move with their imposed velocity.
-// Returns the largest distance of a disc from its reference position (x_ref, y_ref by disc
-// index, the positions at the last neighbour-list build): measured here, where the positions
-// are written anyway, rather than in a pass of its own. Discs and bodies are cut between
-// threads by `split`.
-double integrate(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body, double dt,
-                 const double* x_ref, const double* y_ref, const ThreadSplit& split);
-
 // How far the discs of a thread's share moved from their reference positions.
 struct Displacement {
   double max2 = 0;              // largest squared distance
@@ -32,8 +23,13 @@ struct Displacement {
   double distance() const;      // sqrt(max2), or infinity if any was NaN
 };
 
-// Thread t's share of integrate (its free discs and bodies), for a step run in one thread
-// team; no barrier. The largest displacement is the max over the threads' shares.
+// Advances thread t's free discs and cluster bodies (its shares of `split`) by dt under the
+// given disc forces, then places their member discs on the bodies; kinematic discs and bodies
+// move with their imposed velocity. Returns how far those discs are from their reference
+// positions (x_ref, y_ref by disc index, the positions at the last neighbour-list build):
+// measured here, where the positions are written anyway, rather than in a pass of its own; the
+// step's largest displacement is the max over the threads. For a step run in one thread team
+// (World::step_stages); no barrier.
 Displacement integrate_share(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body,
                              double dt, const double* x_ref, const double* y_ref, const ThreadSplit& split,
                              std::size_t t);

@@ -70,19 +70,33 @@ void World::advance() {
     const bool sort = sort_every > 0 && neighbors.builds % static_cast<std::uint64_t>(sort_every) == 0;
     check_build(build_neighbor_list(neighbors, discs, clusters, walls, law, dt, sort), *this);
   }
+  step_stages();
+  for (auto& w : walls) {
+    w.ax += w.vx * dt; w.bx += w.vx * dt;
+    w.ay += w.vy * dt; w.by += w.vy * dt;
+  }
+  ++step;
+  time = static_cast<double>(step) * dt;
+}
+
+void World::step_stages(const ThreadSplit* given) {
   scratch.forces.resize(discs.size());
   DiscForce* forces = scratch.forces.data();
-  ThreadSplit split;
+  const int threads = given ? given->threads() : step_threads(discs.size());
+  ThreadSplit cut;
   double max2 = 0;
   std::int64_t not_finite = 0;
-  // One thread team for the whole step (a team per stage cost a fork and a join each), each
+  // One thread team for all three stages (a team per stage cost a fork and a join each), each
   // thread on its own stretch of the domain.
-  const int threads = step_threads(discs.size());
 #pragma omp parallel num_threads(threads) reduction(max : max2) reduction(+ : not_finite) if (threads > 1)
   {
-    // Cut for the team actually given (OMP_DYNAMIC may give fewer threads than asked for).
+    // OMP_DYNAMIC may give fewer threads than asked for: then cut for the team actually given.
+    const bool use_given = given && given->threads() == omp_get_num_threads();
+    if (!use_given) {
 #pragma omp single
-    split = split_threads(neighbors, discs, clusters, omp_get_num_threads());
+      cut = split_threads(neighbors, discs, clusters, omp_get_num_threads());
+    }
+    const ThreadSplit& split = use_given ? *given : cut;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     pair_forces_share(neighbors, discs, law, dt, forces, split, t);
     wall_forces_share(neighbors, discs, walls, law, dt, forces, split, t);
@@ -95,12 +109,6 @@ void World::advance() {
     not_finite = r.not_finite;
   }
   moved = Displacement{max2, not_finite}.distance();
-  for (auto& w : walls) {
-    w.ax += w.vx * dt; w.bx += w.vx * dt;
-    w.ay += w.vy * dt; w.by += w.vy * dt;
-  }
-  ++step;
-  time = static_cast<double>(step) * dt;
 }
 
 std::size_t World::remove(std::span<const std::uint8_t> flags, RemovalReason reason) {

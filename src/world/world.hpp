@@ -61,6 +61,12 @@ struct World {
   // One time step (stages listed above).
   void advance();
 
+  // Stages 2-4 of a step (pair forces, wall forces, integration) in one thread team, each
+  // thread on its share of `split` (one thread per share), or with none (advance) on the
+  // threads step_threads gives, cut by split_threads; sets `moved`. The neighbour list must be
+  // valid. Tests give lopsided splits: results never depend on the split.
+  void step_stages(const ThreadSplit* split = nullptr);
+
   // Removes the flagged discs (flags are by disc index; a flagged cluster disc removes its
   // whole cluster), logging each removal; history of the surviving contacts is kept.
   std::size_t remove(std::span<const std::uint8_t> flags, RemovalReason reason);
