@@ -7,7 +7,6 @@
 
 #include "util/select.hpp"
 
-
 namespace orogen {
 
 namespace {
