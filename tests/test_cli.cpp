@@ -378,12 +378,11 @@ TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
       {"--out " + d + "new' --set time.dt=1", {"time.dt = 1", "stability limit"}},
       {"--out " + d + "new' --threads abc", {"--threads"}},
       {"--out " + d + "new' --bogus", {"--bogus"}},
-      {"--out " + d + "a_file'", {"a_file", "cannot create the output folder"}},
+      {"--out " + d + "a_file'", {"a_file", "cannot create the run folder"}},
       {"--out " + d + "done'", {"already holds a run", "--resume"}},
-      {"--resume " + d + "new'", {"no run there"}},
+      {"--resume " + d + "new'", {"no such folder"}},
       {"--resume " + d + "done' --set contact.mu=0.2", {"drop CONFIG and --set"}},
       {"--resume " + d + "done' " + d + "type.toml'", {"drop CONFIG and --set"}},
-      {"--resume " + d + "early'", {"no checkpoint yet"}, false},
       {"--resume " + d + "done'", {"already finished"}, false},
   };
   for (const auto& c : cases) {

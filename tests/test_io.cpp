@@ -4,6 +4,7 @@
 #include "temp_dir_fixture.hpp"
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -248,50 +249,81 @@ TEST_F(IoSnapshot, RoundTripIsBitIdentical) {
   EXPECT_THROW(r.read(2), std::out_of_range);
 }
 
-TEST_F(IoSnapshot, GroupBeyondNOutputsIsIgnoredAndReplaced) {
-  const fs::path p = dir_ / "snapshots.h5";
-  const Discs d = make_discs(4);
-  SnapshotWriter(p).append(make_frame(d, 10));
-  {  // a run killed in the middle of its second append
-    h5::File f = h5::File::open(p, h5::File::Mode::ReadWrite);
-    h5::Group g = h5::Group::create(f.id(), snapshot_group_name(1));
-    h5::write(g.id(), "x", std::vector<double>{1.0, 2.0});
-  }
-  {
-    SnapshotReader r(p);
-    EXPECT_EQ(r.count(), 1);
-    EXPECT_EQ(r.read(0).step, 10);
-    EXPECT_THROW(r.read(1), std::out_of_range);
-  }
-  SnapshotWriter w = SnapshotWriter::reopen(p);
-  EXPECT_EQ(w.count(), 1);
-  w.append(make_frame(d, 20));
-  SnapshotReader r(p);
-  ASSERT_EQ(r.count(), 2);
-  EXPECT_EQ(r.read(1).step, 20);
-  EXPECT_TRUE(same_bits(r.read(1).field("x"), d.x));
+std::vector<fs::path> sorted_files_in(const fs::path& dir) {
+  std::vector<fs::path> names = files_in(dir);
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
-TEST_F(IoSnapshot, TruncateKeepsFirstOutputs) {
+TEST_F(IoSnapshot, EachOutputIsAFileOfItsOwnLinkedFromTheIndex) {
+  const fs::path p = dir_ / "snapshots.h5";
+  const Discs d = make_discs(4);
+  {
+    SnapshotWriter w(p);
+    w.append(make_frame(d, 10));
+    w.append(make_frame(d, 20));
+  }
+  EXPECT_EQ(sorted_files_in(dir_ / "snapshots"), (std::vector<fs::path>{"output_000000.h5", "output_000001.h5"}));
+  h5::File f = h5::File::open(p, h5::File::Mode::ReadOnly);
+  EXPECT_TRUE(h5::is_external_link(f.id(), "output_000001"));
+  f.close();
+  // The run folder can move: links are relative to the index's own folder.
+  fs::create_directories(dir_ / "moved");
+  fs::rename(dir_ / "snapshots.h5", dir_ / "moved" / "snapshots.h5");
+  fs::rename(dir_ / "snapshots", dir_ / "moved" / "snapshots");
+  EXPECT_EQ(SnapshotReader(dir_ / "moved" / "snapshots.h5").read(1).step, 20);
+}
+
+TEST_F(IoSnapshot, ReopenKeepsTheCheckpointsOutputsAndDropsWhatAKillLeft) {
   const fs::path p = dir_ / "snapshots.h5";
   const Discs d = make_discs(3);
   {
     SnapshotWriter w(p);
     for (int k = 0; k < 4; ++k) w.append(make_frame(d, 100 * k));
   }
-  truncate_snapshots(p, 2);
+  // A kill in the middle of writing output 4 leaves its temporary file.
+  std::ofstream(dir_ / "snapshots" / "output_000004.h5.tmp-999") << "half";
+  EXPECT_THROW(SnapshotWriter::reopen(p, 5), h5::Error);
+  SnapshotWriter w = SnapshotWriter::reopen(p, 2);
+  EXPECT_EQ(w.count(), 2);
+  EXPECT_EQ(sorted_files_in(dir_ / "snapshots"), (std::vector<fs::path>{"output_000000.h5", "output_000001.h5"}));
   {
     h5::File f = h5::File::open(p, h5::File::Mode::ReadOnly);
     EXPECT_EQ(h5::get_attr_int64(f.id(), "n_outputs"), 2);
     EXPECT_EQ(h5::list(f.id()), (std::vector<std::string>{"output_000000", "output_000001"}));
   }
-  EXPECT_THROW(truncate_snapshots(p, 3), std::invalid_argument);
-  SnapshotWriter w = SnapshotWriter::reopen(p);
   w.append(make_frame(d, 777));
   SnapshotReader r(p);
   ASSERT_EQ(r.count(), 3);
   EXPECT_EQ(r.read(1).step, 100);
   EXPECT_EQ(r.read(2).step, 777);
+}
+
+TEST_F(IoSnapshot, ReopenRefusesAnIndexWhoseOutputFileIsGone) {
+  const fs::path p = dir_ / "snapshots.h5";
+  const Discs d = make_discs(3);
+  {
+    SnapshotWriter w(p);
+    for (int k = 0; k < 3; ++k) w.append(make_frame(d, k));
+  }
+  fs::remove(dir_ / "snapshots" / "output_000001.h5");
+  try {
+    SnapshotWriter::reopen(p, 3);
+    FAIL() << "reopen accepted a missing output file";
+  } catch (const h5::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("output_000001.h5"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(IoSnapshot, SingleSnapshotFileStandsAlone) {
+  const fs::path p = dir_ / "packing.h5";
+  const Discs d = make_discs(5);
+  write_single_snapshot(p, SnapshotMetadata{{{"length", 8.0}}, {{"content", "orogen-packing"}}}, make_frame(d, 7));
+  EXPECT_EQ(files_in(dir_), std::vector<fs::path>{"packing.h5"});
+  SnapshotReader r(p);
+  ASSERT_EQ(r.count(), 1);
+  EXPECT_EQ(r.read(0).step, 7);
+  EXPECT_EQ(r.metadata().strings.at("content"), "orogen-packing");
 }
 
 TEST_F(IoSnapshot, RejectsBadFramesWithoutTouchingTheFile) {

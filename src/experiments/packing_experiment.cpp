@@ -118,14 +118,13 @@ void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {
   meta.numbers["seed"] = static_cast<double>(packing_.seed);
   const Surface s = measure_surface(w.discs, 0.0, packing_.length,
                                     settle_.column_width_factor * mean_radius(w.discs));
-  SnapshotWriter writer(out_dir / "packing.h5", meta);
   SnapshotFrame frame;
   frame.step = static_cast<std::int64_t>(w.step);
   frame.time = w.time;
   frame.discs = &w.discs;
   for (std::size_t k = 0; k < s.height.size(); ++k) frame.attrs[fmt::format("surface_{:05d}", k)] = s.height[k];
   frame.attrs["column_width"] = s.width;
-  writer.append(frame);
+  write_single_snapshot(out_dir / "packing.h5", meta, frame);
 }
 
 std::vector<SummaryValue> PackingExperiment::summary(const World& w) const {

@@ -257,6 +257,17 @@ void remove(hid_t loc, const std::string& name) {
   check(H5Ldelete(loc, name.c_str(), H5P_DEFAULT), "cannot delete " + quoted(name));
 }
 
+void link_external(hid_t loc, const std::string& name, const std::string& file, const std::string& object) {
+  check(H5Lcreate_external(file.c_str(), object.c_str(), loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+        "cannot link " + quoted(name) + " to " + quoted(file));
+}
+
+bool is_external_link(hid_t loc, const std::string& name) {
+  H5L_info_t info;
+  check(H5Lget_info(loc, name.c_str(), &info, H5P_DEFAULT), "cannot look up " + quoted(name));
+  return info.type == H5L_TYPE_EXTERNAL;
+}
+
 std::vector<std::string> list(hid_t loc) {
   std::vector<std::string> names;
   hsize_t index = 0;

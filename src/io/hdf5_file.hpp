@@ -67,6 +67,10 @@ class Group : public Object {
 bool exists(hid_t loc, const std::string& name);
 void remove(hid_t loc, const std::string& name);  // H5Ldelete; space is not reclaimed
 std::vector<std::string> list(hid_t loc);         // names in ascending name order
+// A link `name` under `loc` to `object` in another file; a relative `file` is found from the
+// directory of the file that holds the link (HDF5's rule), so a run folder can be moved whole.
+void link_external(hid_t loc, const std::string& name, const std::string& file, const std::string& object);
+bool is_external_link(hid_t loc, const std::string& name);
 
 // Dataset storage: 0 = contiguous; 1..9 = chunked with shuffle + deflate at that level.
 struct WriteOptions {

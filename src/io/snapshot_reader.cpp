@@ -22,11 +22,7 @@ SnapshotReader::SnapshotReader(const std::filesystem::path& path)
     throw h5::Error(fmt::format("'{}' has snapshot format version {}, this build reads {}", path.string(), version,
                                 kSnapshotVersion));
   count_ = h5::get_attr_int64(root, "n_outputs");
-  for (const auto& a : h5::list_attrs(root)) {
-    if (a.name == "format" || a.name == "version" || a.name == "n_outputs") continue;
-    if (a.kind == h5::Kind::String) meta_.strings[a.name] = h5::get_attr_string(root, a.name);
-    else if (a.kind != h5::Kind::Other) meta_.numbers[a.name] = h5::get_attr_double(root, a.name);
-  }
+  meta_ = read_snapshot_metadata(path);
 }
 
 Snapshot SnapshotReader::read(std::int64_t k) const {

@@ -79,74 +79,133 @@ std::int64_t read_count(hid_t file, const std::filesystem::path& path) {
   return h5::get_attr_int64(file, "n_outputs");
 }
 
+void check_metadata(const SnapshotMetadata& meta) {
+  for (const auto& name : {"format", "version", "n_outputs"})
+    if (meta.numbers.contains(name) || meta.strings.contains(name))
+      throw std::invalid_argument(fmt::format("snapshot metadata name '{}' is reserved", name));
+}
+
+void write_root_attrs(hid_t root, const SnapshotMetadata& meta, std::int64_t n_outputs) {
+  h5::set_attr_string(root, "format", kSnapshotFormat);
+  h5::set_attr_int64(root, "version", kSnapshotVersion);
+  for (const auto& [k, v] : meta.numbers) h5::set_attr_double(root, k, v);
+  for (const auto& [k, v] : meta.strings) h5::set_attr_string(root, k, v);
+  h5::set_attr_int64(root, "n_outputs", n_outputs);
+}
+
+// "snapshots/output_000042.h5": the data file of output k, relative to the index's folder.
+std::filesystem::path output_file(const std::filesystem::path& index, std::int64_t k) {
+  return data_folder(index).filename() / (snapshot_group_name(k) + ".h5");
+}
+
+// Removes data files from output `keep` on and temporary files a killed write left.
+void remove_data_beyond(const std::filesystem::path& index, std::int64_t keep) {
+  const auto folder = data_folder(index);
+  if (!std::filesystem::is_directory(folder)) return;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    const bool temp = name.find(".tmp-") != std::string::npos;
+    const std::int64_t k = name.ends_with(".h5") ? group_index(name.substr(0, name.size() - 3)) : -1;
+    if (temp || k >= keep) std::filesystem::remove(entry.path());
+  }
+}
+
 }  // namespace
 
 std::string snapshot_group_name(std::int64_t k) { return fmt::format("output_{:06d}", k); }
 
-SnapshotWriter::SnapshotWriter(Reopened, std::filesystem::path path, std::int64_t count, h5::WriteOptions storage)
-    : path_(std::move(path)), count_(count), storage_(storage) {}
+std::filesystem::path data_folder(const std::filesystem::path& index) {
+  std::filesystem::path folder = index;
+  return folder.replace_extension();
+}
+
+SnapshotWriter::SnapshotWriter(std::filesystem::path path, SnapshotMetadata meta, std::int64_t count,
+                               h5::WriteOptions storage)
+    : path_(std::move(path)), meta_(std::move(meta)), count_(count), storage_(storage) {}
 
 SnapshotWriter::SnapshotWriter(std::filesystem::path path, const SnapshotMetadata& meta, h5::WriteOptions storage)
-    : path_(std::move(path)), storage_(storage) {
-  for (const auto& name : {"format", "version", "n_outputs"})
-    if (meta.numbers.contains(name) || meta.strings.contains(name))
-      throw std::invalid_argument(fmt::format("snapshot metadata name '{}' is reserved", name));
+    : path_(std::move(path)), meta_(meta), storage_(storage) {
+  check_metadata(meta_);
+  remove_data_beyond(path_, 0);
+  std::filesystem::create_directories(data_folder(path_));
+  write_index();
+}
+
+SnapshotWriter SnapshotWriter::reopen(std::filesystem::path path, std::int64_t keep, h5::WriteOptions storage) {
+  std::int64_t n = 0;
+  SnapshotMetadata meta;
+  {
+    h5::File f = h5::File::open(path, h5::File::Mode::ReadOnly);
+    n = read_count(f.id(), path);
+    if (n > 0 && !h5::is_external_link(f.id(), snapshot_group_name(0)))
+      throw h5::Error("'" + path.string() + "' holds its outputs inside (written by Orogen before 0.2); it cannot be "
+                      "continued by this build");
+  }
+  meta = read_snapshot_metadata(path);
+  if (keep < 0 || keep > n)
+    throw h5::Error(fmt::format("'{}' has {} complete outputs, fewer than the {} the checkpoint counts", path.string(),
+                                n, keep));
+  for (std::int64_t k = 0; k < keep; ++k)
+    if (!std::filesystem::exists(path.parent_path() / output_file(path, k)))
+      throw h5::Error(fmt::format("'{}' is missing: output {} of the run is gone",
+                                  (path.parent_path() / output_file(path, k)).string(), k));
+  SnapshotWriter w(std::move(path), std::move(meta), keep, storage);
+  w.write_index();  // uncount first, then delete what lies beyond
+  remove_data_beyond(w.path_, keep);
+  return w;
+}
+
+void SnapshotWriter::write_index() const {
   AtomicPath out(path_);
   {
     h5::File f = h5::File::create(out.temp());
-    h5::set_attr_string(f.id(), "format", kSnapshotFormat);
-    h5::set_attr_int64(f.id(), "version", kSnapshotVersion);
-    for (const auto& [k, v] : meta.numbers) h5::set_attr_double(f.id(), k, v);
-    for (const auto& [k, v] : meta.strings) h5::set_attr_string(f.id(), k, v);
-    h5::set_attr_int64(f.id(), "n_outputs", 0);
+    write_root_attrs(f.id(), meta_, count_);
+    for (std::int64_t k = 0; k < count_; ++k)
+      h5::link_external(f.id(), snapshot_group_name(k), output_file(path_, k).string(), "/");
     f.close();
   }
   out.commit();
 }
 
-SnapshotWriter SnapshotWriter::reopen(std::filesystem::path path, h5::WriteOptions storage) {
-  std::int64_t n = 0;
-  {
-    h5::File f = h5::File::open(path, h5::File::Mode::ReadOnly);
-    n = read_count(f.id(), path);
-  }
-  truncate_snapshots(path, n);  // drops a group half-written by a killed run
-  return SnapshotWriter(Reopened{}, std::move(path), n, storage);
-}
-
 void SnapshotWriter::append(const SnapshotFrame& frame) {
   validate(frame);
-  h5::File f = h5::File::open(path_, h5::File::Mode::ReadWrite);
-  const std::string name = snapshot_group_name(count_);
-  if (h5::exists(f.id(), name)) h5::remove(f.id(), name);  // left by a killed append
+  AtomicPath out(path_.parent_path() / output_file(path_, count_));
   {
-    h5::Group g = h5::Group::create(f.id(), name);
-    write_group(g.id(), frame, storage_);
-    g.close();
+    h5::File f = h5::File::create(out.temp());
+    write_group(f.id(), frame, storage_);
+    f.close();
   }
-  // The group must be on disk before n_outputs counts it.
-  f.flush();
-  fsync_file(path_);
-  h5::set_attr_int64(f.id(), "n_outputs", count_ + 1);
-  f.flush();
-  f.close();
-  fsync_file(path_);
+  out.commit();
   ++count_;
+  write_index();
 }
 
-void truncate_snapshots(const std::filesystem::path& path, std::int64_t k) {
-  h5::File f = h5::File::open(path, h5::File::Mode::ReadWrite);
-  const std::int64_t n = read_count(f.id(), path);
-  if (k < 0 || k > n)
-    throw std::invalid_argument(fmt::format("cannot truncate '{}' to {} outputs: it has {}", path.string(), k, n));
-  // Uncount first, so a kill during the deletions leaves only ignored groups behind.
-  h5::set_attr_int64(f.id(), "n_outputs", k);
-  f.flush();
-  for (const auto& link : h5::list(f.id()))
-    if (group_index(link) >= k) h5::remove(f.id(), link);
-  f.flush();
-  f.close();
-  fsync_file(path);
+void write_single_snapshot(const std::filesystem::path& path, const SnapshotMetadata& meta, const SnapshotFrame& frame,
+                           h5::WriteOptions storage) {
+  check_metadata(meta);
+  validate(frame);
+  AtomicPath out(path);
+  {
+    h5::File f = h5::File::create(out.temp());
+    write_root_attrs(f.id(), meta, 1);
+    h5::Group g = h5::Group::create(f.id(), snapshot_group_name(0));
+    write_group(g.id(), frame, storage);
+    g.close();
+    f.close();
+  }
+  out.commit();
+}
+
+SnapshotMetadata read_snapshot_metadata(const std::filesystem::path& path) {
+  h5::File f = h5::File::open(path, h5::File::Mode::ReadOnly);
+  read_count(f.id(), path);
+  SnapshotMetadata meta;
+  for (const auto& a : h5::list_attrs(f.id())) {
+    if (a.name == "format" || a.name == "version" || a.name == "n_outputs") continue;
+    if (a.kind == h5::Kind::String) meta.strings[a.name] = h5::get_attr_string(f.id(), a.name);
+    else if (a.kind != h5::Kind::Other) meta.numbers[a.name] = h5::get_attr_double(f.id(), a.name);
+  }
+  return meta;
 }
 
 }  // namespace orogen

@@ -1,7 +1,10 @@
 #pragma once
-// Appends output steps to `snapshots.h5`, one group per output. Crash safety: the root
-// attribute `n_outputs` is written last, after the new group is complete and flushed to
-// disk, and readers trust only groups below it (see docs/output-files.md).
+// Writes the output steps of a run: each output is a file of its own in `snapshots/`, written
+// to a temporary name and renamed into place, and `snapshots.h5` is a small index (metadata,
+// n_outputs and one external link per output) rewritten the same way after each output.
+// A kill at any moment thus leaves complete files only: HDF5 gives no such promise for a file
+// changed in place (a killed append could leave a file that cannot even be truncated).
+// Readers open the index and see one group per output (see docs/output-files.md).
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -43,30 +46,42 @@ std::string snapshot_group_name(std::int64_t k);
 
 class SnapshotWriter {
  public:
-  // Creates a new file with no outputs (atomically replacing any old one).
+  // Starts a new series with no outputs: an empty index at `path` (atomically replacing any
+  // old one) and an empty data folder beside it (see data_folder).
   // `storage.deflate` > 0 stores datasets shuffled and deflated at that level.
   explicit SnapshotWriter(std::filesystem::path path, const SnapshotMetadata& meta = {},
                           h5::WriteOptions storage = {.deflate = 1});
 
-  // Continues an existing file after its last complete output; groups a killed run left
-  // beyond `n_outputs` are deleted.
-  static SnapshotWriter reopen(std::filesystem::path path, h5::WriteOptions storage = {.deflate = 1});
+  // Continues a series after its first `keep` outputs (a resumed run: the outputs its
+  // checkpoint knows). The index is rewritten to list those alone and later data files, and
+  // any a killed write left half-done, are deleted. Throws if fewer than `keep` are there.
+  static SnapshotWriter reopen(std::filesystem::path path, std::int64_t keep,
+                               h5::WriteOptions storage = {.deflate = 1});
 
-  // Adds group output_<count()>; the file is open only during this call.
+  // Writes output count() as its own file, then the index that counts it.
   void append(const SnapshotFrame& frame);
 
   std::int64_t count() const { return count_; }
   const std::filesystem::path& path() const { return path_; }
 
  private:
-  struct Reopened {};
-  SnapshotWriter(Reopened, std::filesystem::path path, std::int64_t count, h5::WriteOptions storage);
+  SnapshotWriter(std::filesystem::path path, SnapshotMetadata meta, std::int64_t count, h5::WriteOptions storage);
+  void write_index() const;
   std::filesystem::path path_;
+  SnapshotMetadata meta_;
   std::int64_t count_ = 0;
   h5::WriteOptions storage_;
 };
 
-// Keeps outputs 0..k-1 (for a resumed run): sets n_outputs = k, then deletes later groups.
-void truncate_snapshots(const std::filesystem::path& path, std::int64_t k);
+// The folder of per-output files beside an index: "snapshots" for "snapshots.h5".
+std::filesystem::path data_folder(const std::filesystem::path& index);
+
+// A self-contained file holding one output (packing.h5): no data folder, so it can be copied
+// alone. Readers see the same layout as an index with one output.
+void write_single_snapshot(const std::filesystem::path& path, const SnapshotMetadata& meta, const SnapshotFrame& frame,
+                           h5::WriteOptions storage = {.deflate = 1});
+
+// The metadata stored on a snapshot file's root (for reopening an index).
+SnapshotMetadata read_snapshot_metadata(const std::filesystem::path& path);
 
 }  // namespace orogen

@@ -1,6 +1,7 @@
 #include "run/runner.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <omp.h>
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/sinks/stdout_sinks.h>
@@ -19,6 +20,7 @@
 #include "io/vtp_writer.hpp"
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
+#include "run/run_folder.hpp"
 #include "run/thread_tuner.hpp"
 #include "world/world_archive.hpp"
 
@@ -56,7 +58,7 @@ class Run {
       : config_(config), dir_(std::move(dir)), exp_(std::move(experiment)),
         interval_(exp_->output_interval().value_or(config.get_float("output.interval"))),
         checkpoint_every_(config.get_int("output.checkpoint_every")),
-        write_vtp_(config.get_bool("output.vtp")) {}
+        write_vtp_(config.get_bool("output.vtp")), identity_(run_identity(config)) {}
 
   // Builds the initial state and writes nothing, so that errors found here (time.dt above the
   // stability limit) leave no files behind.
@@ -65,31 +67,46 @@ class Run {
     exp_->setup(world_);
   }
 
+  // Writes output 0 and a checkpoint at once, so that from here on a killed run resumes.
   void start_fresh() {
     snapshots_.emplace(dir_ / "snapshots.h5", metadata());
     series_.emplace(dir_ / "series.csv", csv_columns(), preamble());
-    fs::create_directories(dir_ / "vtp");
+    if (write_vtp_) fs::create_directories(dir_ / "vtp");
     output();
+    checkpoint();
   }
 
-  void resume() {
+  // Restores the checkpoint after checking that it, the configuration and the outputs belong
+  // to one run; writes nothing, so a refused resume leaves the folder as it was.
+  void load_checkpoint() {
     apply_engine_config(config_, world_);
     const ArchiveReader in(dir_ / "checkpoint.bin");
+    check_checkpoint_belongs(in);
+    state_.finished = in.get_scalar<std::uint8_t>("run.finished") != 0;
+    if (state_.finished) throw UsageError(fmt::format("the run in {} has already finished", dir_.string()));
     load_world(in, world_);
     exp_->load(in);
     state_.outputs = in.get_scalar<std::int64_t>("run.outputs");
     in.get("run.output_times", state_.output_times);
-    state_.finished = in.get_scalar<std::uint8_t>("run.finished") != 0;
-    if (state_.finished) throw UsageError(fmt::format("the run in {} has already finished", dir_.string()));
-    // Drop outputs written after the checkpoint; the resumed run writes them again.
-    truncate_snapshots(dir_ / "snapshots.h5", state_.outputs);
-    snapshots_.emplace(SnapshotWriter::reopen(dir_ / "snapshots.h5"));
+    check_outputs_belong();
+  }
+
+  // Continues the outputs after the checkpoint's last one; later ones are dropped and written
+  // again by the resumed run.
+  void reopen_outputs() {
+    snapshots_.emplace(SnapshotWriter::reopen(dir_ / "snapshots.h5", state_.outputs));
     series_.emplace(CsvSeries::load(dir_ / "series.csv"));
+    if (series_->rows().size() < static_cast<std::size_t>(state_.outputs))
+      throw RunFolderError(fmt::format("{} has {} rows but the checkpoint counts {} outputs: the files are not of "
+                                       "one run",
+                                       (dir_ / "series.csv").string(), series_->rows().size(), state_.outputs));
     series_->truncate(static_cast<std::size_t>(state_.outputs));
     for (std::int64_t k = state_.outputs;; ++k) {
       if (!fs::remove(dir_ / vtp_name(k))) break;
     }
     if (write_vtp_) write_pvd_file();
+    write_removal_log(dir_ / "removals.csv", world_.removals);
+    last_output_step_ = world_.step;
     log().info("resumed at step {} (t = {:.6g}) after output {}", world_.step, world_.time, state_.outputs - 1);
   }
 
@@ -145,6 +162,7 @@ class Run {
     m.numbers["h0"] = exp_->h0();
     m.numbers["dt"] = world_.dt;
     m.numbers["x_split"] = exp_->x_split();
+    m.strings["run_identity"] = identity_;
     return m;
   }
 
@@ -213,7 +231,38 @@ class Run {
     out.put_scalar("run.outputs", state_.outputs);
     out.put("run.output_times", state_.output_times);
     out.put_scalar<std::uint8_t>("run.finished", state_.finished ? 1 : 0);
+    out.put_string("run.identity", identity_);
+    out.put_string("run.config", config_.to_toml());
     out.finish(dir_ / "checkpoint.bin");
+  }
+
+  // The checkpoint must come from a run of this folder's configuration.
+  void check_checkpoint_belongs(const ArchiveReader& in) const {
+    const fs::path ckpt = dir_ / "checkpoint.bin";
+    if (!in.has("run.config") || !in.has("run.identity"))
+      throw RunFolderError(fmt::format("{} was written by an older Orogen and holds no copy of its configuration; "
+                                       "start the run again in a new folder",
+                                       ckpt.string()));
+    const std::string differences =
+        config_differences(config_.to_toml(), in.get_string("run.config"), "config.toml", "the checkpoint");
+    if (!differences.empty())
+      throw RunFolderError(fmt::format("{} and {} are not of one run: {}. Restore config.toml, or start a new run "
+                                       "in another folder",
+                                       (dir_ / "config.toml").string(), ckpt.string(), differences));
+    if (in.get_string("run.identity") != identity_)
+      throw RunFolderError(fmt::format("{} comes from another run (identity {}, this configuration's is {})",
+                                       ckpt.string(), in.get_string("run.identity"), identity_));
+  }
+
+  // The snapshot index must come from this run too.
+  void check_outputs_belong() const {
+    const fs::path index = dir_ / "snapshots.h5";
+    if (!fs::exists(index)) throw RunFolderError(fmt::format("{} is missing: the run's outputs are gone", index.string()));
+    const SnapshotMetadata meta = read_snapshot_metadata(index);
+    const auto it = meta.strings.find("run_identity");
+    if (it == meta.strings.end() || it->second != identity_)
+      throw RunFolderError(fmt::format("{} comes from another run (identity {}, this configuration's is {})",
+                                       index.string(), it == meta.strings.end() ? "none" : it->second, identity_));
   }
 
   const Config& config_;
@@ -224,6 +273,7 @@ class Run {
   double interval_;
   std::int64_t checkpoint_every_;
   bool write_vtp_;
+  std::string identity_;
   std::uint64_t last_output_step_ = 0;
   std::int64_t abort_after_outputs_ = 0;
   std::optional<SnapshotWriter> snapshots_;
@@ -239,46 +289,95 @@ Progress::Mode progress_mode(const Config& c) {
 
 }  // namespace
 
+namespace {
+
+// A fresh run: the folder is claimed (locked) before anything else, must hold no run files,
+// and gets its config.toml before set-up, so that a run killed during a long set-up is
+// already a run that --resume starts again.
+void claim_for_new_run(const RunOptions& opt, const Config& config, RunFolderLock& lock) {
+  if (fs::exists(opt.out / "config.toml")) {
+    lock.abandon();
+    throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
+                                 opt.out.string(), opt.out.string()));
+  }
+  if (const auto found = run_files_in(opt.out); !found.empty()) {
+    lock.abandon();
+    throw UsageError(fmt::format("{} holds files of a run ({}) but no config.toml; remove them or choose another "
+                                 "--out",
+                                 opt.out.string(), fmt::join(found, ", ")));
+  }
+  write_file_atomically(opt.out / "config.toml", config.to_toml());
+}
+
+// Undoes claim_for_new_run after a set-up that failed (bad input, unstable set-up): nothing
+// of the run is left behind.
+void release_new_run(const RunOptions& opt, RunFolderLock& lock) {
+  std::error_code ec;
+  fs::remove(opt.out / "config.toml", ec);
+  lock.abandon();
+}
+
+Config config_for_resume(const RunOptions& opt) {
+  if (opt.config || !opt.overrides.empty())
+    throw UsageError("--resume takes its configuration from the run folder; drop CONFIG and --set");
+  if (!fs::is_directory(opt.out)) throw UsageError(fmt::format("--resume {}: no such folder", opt.out.string()));
+  if (!fs::exists(opt.out / "config.toml"))
+    throw UsageError(fmt::format("--resume {}: no run there (config.toml is missing)", opt.out.string()));
+  return Config::load(opt.out / "config.toml", {});
+}
+
+}  // namespace
+
 int run_command(const RunOptions& opt) {
   try {
-    std::optional<Config> config;
-    if (opt.resume) {
-      if (!fs::exists(opt.out / "config.toml"))
-        throw UsageError(fmt::format("--resume {}: no run there (config.toml is missing)", opt.out.string()));
-      if (!fs::exists(opt.out / "checkpoint.bin"))
-        throw UsageError(fmt::format("--resume {}: no checkpoint yet (the run stopped before its first one); "
-                                     "start it again",
-                                     opt.out.string()));
-      if (opt.config || !opt.overrides.empty())
-        throw UsageError("--resume takes its configuration from the run folder; drop CONFIG and --set");
-      config.emplace(Config::load(opt.out / "config.toml", {}));
-    } else {
-      config.emplace(Config::load(opt.config, opt.overrides));
-      if (fs::exists(opt.out / "config.toml"))
-        throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
-                                     opt.out.string(), opt.out.string()));
-    }
-    auto experiment = make_experiment(*config);
-    const int threads = opt.threads >= 0 ? opt.threads : static_cast<int>(config->get_int("run.threads"));
+    if (opt.resume && opt.out.empty()) throw UsageError("--resume needs a run folder");
+    const Config config = opt.resume ? config_for_resume(opt) : Config::load(opt.config, opt.overrides);
+    if (!opt.resume && fs::exists(opt.out / "config.toml"))
+      throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
+                                   opt.out.string(), opt.out.string()));
+    auto experiment = make_experiment(config);
+    const int threads = opt.threads >= 0 ? opt.threads : static_cast<int>(config.get_int("run.threads"));
     if (threads > 0) omp_set_num_threads(threads);
 
-    Run run(*config, opt.out, std::move(experiment));
+    RunFolderLock lock(opt.out);
+    // A resume without a checkpoint (killed during set-up) starts the run again from its set-up.
+    const bool from_checkpoint = opt.resume && fs::exists(opt.out / "checkpoint.bin");
+    if (!opt.resume) claim_for_new_run(opt, config, lock);
+    const int stale = remove_temporary_files(opt.out);
+    if (opt.resume && !from_checkpoint) remove_run_outputs(opt.out);
+
+    Run run(config, opt.out, std::move(experiment));
     run.abort_after_outputs(opt.abort_after_outputs);
-    if (!opt.resume) run.setup();
-    std::error_code ec;
-    fs::create_directories(opt.out, ec);
-    if (ec) throw UsageError(fmt::format("cannot create the output folder {}: {}", opt.out.string(), ec.message()));
-    if (!opt.resume) write_file_atomically(opt.out / "config.toml", config->to_toml());
+    if (from_checkpoint) {
+      run.load_checkpoint();
+    } else {
+      try {
+        run.setup();
+      } catch (const InstabilityError& e) {
+        if (!opt.resume) release_new_run(opt, lock);
+        std::cerr << "error: the set-up became unstable: " << e.what() << "\n";
+        return 3;
+      } catch (...) {
+        if (!opt.resume) release_new_run(opt, lock);
+        throw;
+      }
+    }
     auto logger = make_logger(opt.out);
     spdlog::drop("orogen");
     spdlog::register_logger(logger);
     logger->info("orogen {} {} in {} with {} thread(s)", OROGEN_VERSION, opt.resume ? "resume" : "run",
                  opt.out.string(), omp_get_max_threads());
+    if (stale > 0) logger->info("removed {} temporary file(s) left by a killed write", stale);
 
-    if (opt.resume) run.resume(); else run.start_fresh();
+    if (from_checkpoint) {
+      run.reopen_outputs();
+    } else {
+      if (opt.resume) logger->info("no checkpoint yet (the run was stopped during its set-up): starting it again");
+      run.start_fresh();
+    }
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
                  run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
-    Progress progress(progress_mode(*config));
+    Progress progress(progress_mode(config));
     try {
       run.loop(progress);
     } catch (const InstabilityError& e) {
@@ -291,6 +390,9 @@ int run_command(const RunOptions& opt) {
     std::cerr << e.what() << "\n";
     return 2;
   } catch (const UsageError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const RunFolderError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

@@ -1,0 +1,138 @@
+#include "run/run_folder.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <map>
+
+#include "config/config.hpp"
+#include "io/binary_archive.hpp"
+
+namespace fs = std::filesystem;
+
+namespace orogen {
+namespace {
+
+// Everything a run writes into its folder besides config.toml and run.lock.
+constexpr std::array<const char*, 11> kRunOutputs = {"checkpoint.bin", "snapshots.h5", "snapshots",   "series.csv",
+                                                     "removals.csv",   "summary.csv",  "run.pvd",     "vtp",
+                                                     "packing.h5",     "profile.csv",  "run.log"};
+
+// Keys that change how fast or how visibly a run goes, never what it computes.
+constexpr std::array<std::string_view, 6> kKeysOutsideIdentity = {"run.threads",     "run.adapt_threads",
+                                                                  "run.adapt_slice", "output.progress",
+                                                                  "output.checkpoint_every", "output.vtp"};
+
+// "section.key" -> value text of each assignment line of a resolved configuration.
+std::map<std::string, std::string> key_values(std::string_view toml) {
+  std::map<std::string, std::string> out;
+  std::string section;
+  std::size_t begin = 0;
+  while (begin < toml.size()) {
+    std::size_t end = toml.find('\n', begin);
+    if (end == std::string_view::npos) end = toml.size();
+    const std::string_view line = toml.substr(begin, end - begin);
+    begin = end + 1;
+    if (line.empty() || line.front() == '#') continue;
+    if (line.front() == '[' && line.back() == ']') {
+      section = std::string(line.substr(1, line.size() - 2));
+      continue;
+    }
+    const std::size_t eq = line.find(" = ");
+    if (eq == std::string_view::npos) continue;
+    out[section + "." + std::string(line.substr(0, eq))] = std::string(line.substr(eq + 3));
+  }
+  return out;
+}
+
+bool is_temporary(const fs::path& p) { return p.filename().string().find(".tmp-") != std::string::npos; }
+
+}  // namespace
+
+RunFolderLock::RunFolderLock(const fs::path& dir) : dir_(dir) {
+  std::error_code ec;
+  created_dir_ = fs::create_directories(dir, ec);
+  if (ec) throw RunFolderError(fmt::format("cannot create the run folder {}: {}", dir.string(), ec.message()));
+  const fs::path lock = dir / "run.lock";
+  fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw RunFolderError(fmt::format("cannot write in the run folder {}: {}", dir.string(), std::strerror(errno)));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw RunFolderError(fmt::format("{} is in use by another orogen process (it holds {}); wait for it to end or "
+                                     "choose another folder",
+                                     dir.string(), lock.string()));
+  }
+}
+
+RunFolderLock::~RunFolderLock() {
+  if (fd_ >= 0) ::close(fd_);  // closing drops the lock
+}
+
+void RunFolderLock::abandon() {
+  std::error_code ec;
+  fs::remove(dir_ / "run.lock", ec);
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  if (created_dir_ && fs::is_empty(dir_, ec)) fs::remove(dir_, ec);
+}
+
+std::vector<std::string> run_files_in(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const char* name : kRunOutputs)
+    if (fs::exists(dir / name)) found.emplace_back(name);
+  return found;
+}
+
+void remove_run_outputs(const fs::path& dir) {
+  for (const char* name : kRunOutputs)
+    if (std::string_view(name) != "run.log") fs::remove_all(dir / name);
+}
+
+int remove_temporary_files(const fs::path& dir) {
+  int removed = 0;
+  for (const fs::path& folder : {dir, dir / "vtp", dir / "snapshots"}) {
+    if (!fs::is_directory(folder)) continue;
+    std::vector<fs::path> stale;
+    for (const auto& entry : fs::directory_iterator(folder))
+      if (is_temporary(entry.path())) stale.push_back(entry.path());
+    for (const auto& p : stale) removed += fs::remove(p) ? 1 : 0;
+  }
+  return removed;
+}
+
+std::string config_differences(std::string_view here, std::string_view there, std::string_view here_name,
+                               std::string_view there_name) {
+  const auto a = key_values(here), b = key_values(there);
+  std::string out;
+  auto add = [&](const std::string& key, const std::string& va, const std::string& vb) {
+    out += fmt::format("{}{} = {} in {}, {} in {}", out.empty() ? "" : "; ", key, va.empty() ? "(absent)" : va,
+                       here_name, vb.empty() ? "(absent)" : vb, there_name);
+  };
+  for (const auto& [key, value] : a) {
+    const auto it = b.find(key);
+    if (it == b.end()) add(key, value, "");
+    else if (it->second != value) add(key, value, it->second);
+  }
+  for (const auto& [key, value] : b)
+    if (!a.contains(key)) add(key, "", value);
+  return out;
+}
+
+std::string run_identity(const Config& config) {
+  std::string text;
+  for (const auto& [key, value] : key_values(config.to_toml()))
+    if (std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) == kKeysOutsideIdentity.end())
+      text += key + "=" + value + "\n";
+  return fmt::format("{:016x}", fnv1a64(text));
+}
+
+}  // namespace orogen
