@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -498,4 +499,193 @@ TEST_F(Cli, WedgeResumeAfterKillIsBitwiseIdentical) {
   expect_same_bytes(a / "removals.csv", b / "removals.csv");
   expect_same_bytes(a / "checkpoint.bin", b / "checkpoint.bin");
   expect_same_snapshots(a / "snapshots.h5", b / "snapshots.h5");
+}
+
+// ---- A run folder is owned by one run, and every failure leaves it resumable (issue 14) ----
+
+namespace {
+
+// A small tmpfs mounted at `dir` for the disk tests (root only; the test is skipped elsewhere).
+bool mount_tmpfs(const fs::path& dir, const std::string& size) {
+  fs::create_directories(dir);
+  return std::system(("mount -t tmpfs -o size=" + size + " tmpfs '" + dir.string() + "' 2>/dev/null").c_str()) == 0;
+}
+
+bool remount(const fs::path& dir, const std::string& options) {
+  return std::system(("mount -o remount," + options + " '" + dir.string() + "' 2>/dev/null").c_str()) == 0;
+}
+
+struct Unmount {
+  fs::path dir;
+  ~Unmount() { std::system(("umount -l '" + dir.string() + "' 2>/dev/null").c_str()); }
+};
+
+std::vector<std::string> temporary_files_in(const fs::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& name : names_in(dir))
+    if (name.find(".tmp-") != std::string::npos) out.push_back(name);
+  return out;
+}
+
+}  // namespace
+
+TEST_F(Cli, ResumeRemovesTheTemporaryFilesOfAKilledWrite) {
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "' " + kTiny, dir_).status, 0);
+  ASSERT_EQ(orogen_cli("run --out '" + b.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
+  // What a kill in the middle of each kind of write leaves.
+  for (const fs::path& stray : {b / "series.csv.tmp-4242", b / "checkpoint.bin.tmp-4242",
+                                b / "snapshots" / "output_000003.h5.tmp-4242", b / "vtp" / "output_000003.vtp.tmp-7"})
+    spit(stray, "half written");
+  const auto r = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(temporary_files_in(b), std::vector<std::string>{});
+  EXPECT_NE(slurp(b / "run.log").find("removed 4 temporary file(s)"), std::string::npos);
+  expect_same_run(a, b);
+}
+
+TEST_F(Cli, AFolderWithRunFilesButNoConfigIsRefusedAndKept) {
+  const fs::path run = dir_ / "orphan";
+  fs::create_directories(run);
+  spit(run / "snapshots.h5", "precious");
+  spit(run / "series.csv", "precious too");
+  const auto r = orogen_cli("run --out '" + run.string() + "' " + kTiny, dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("holds files of a run (snapshots.h5, series.csv) but no config.toml"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(names_in(run), (std::vector<std::string>{"series.csv", "snapshots.h5"}));
+  EXPECT_EQ(slurp(run / "snapshots.h5"), "precious");
+}
+
+TEST_F(Cli, AFolderHeldByAnotherRunIsRefused) {
+  const fs::path run = dir_ / "busy";
+  fs::create_directories(run);
+  const int fd = ::open((run / "run.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX), 0);  // as a running orogen holds it
+  const auto r = orogen_cli("run --out '" + run.string() + "' " + kTiny, dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("in use by another orogen process"), std::string::npos) << r.err;
+  EXPECT_EQ(names_in(run), std::vector<std::string>{"run.lock"});
+  ::close(fd);
+}
+
+TEST_F(Cli, TwoRunsStartedIntoOneNewFolderCannotBothRun) {
+  const fs::path run = dir_ / "shared";
+  const std::string cmd = "'" + std::string(OROGEN_BINARY) + "' run --out '" + run.string() + "' " + kTiny;
+  // Both start at once; whichever claims the folder first runs, the other is refused.
+  const std::string both = "(" + cmd + " >'" + (dir_ / "out1").string() + "' 2>&1; echo $? >'" +
+                           (dir_ / "rc1").string() + "') & (" + cmd + " >'" + (dir_ / "out2").string() +
+                           "' 2>&1; echo $? >'" + (dir_ / "rc2").string() + "') & wait";
+  spit(dir_ / "both.sh", both + "\n");
+  ASSERT_EQ(std::system(("bash '" + (dir_ / "both.sh").string() + "'").c_str()), 0);
+  std::vector<std::string> codes = {slurp(dir_ / "rc1"), slurp(dir_ / "rc2")};
+  std::sort(codes.begin(), codes.end());
+  EXPECT_EQ(codes, (std::vector<std::string>{"0\n", "2\n"}));
+  const std::string refused = slurp(dir_ / (slurp(dir_ / "rc1") == "2\n" ? "out1" : "out2"));
+  EXPECT_TRUE(refused.find("in use by another orogen process") != std::string::npos ||
+              refused.find("already holds a run") != std::string::npos)
+      << refused;
+  const std::string log = slurp(run / "run.log");
+  EXPECT_EQ(log.find("orogen " OROGEN_VERSION " run in"), log.rfind("orogen " OROGEN_VERSION " run in")) << log;
+}
+
+TEST_F(Cli, ResumeRefusesFilesOfAnotherRunNamingWhatDiffers) {
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
+  ASSERT_EQ(orogen_cli("run --out '" + b.string() + "' --abort-after-outputs 3 --set run.seed=2 " + kTiny, dir_).status,
+            137);
+  const auto before = names_in(a);
+  auto resume_a = [&] { return orogen_cli("run --resume '" + a.string() + "'", dir_); };
+
+  // A checkpoint copied from another seed's run.
+  fs::copy_file(a / "checkpoint.bin", dir_ / "own.bin");
+  fs::copy_file(b / "checkpoint.bin", a / "checkpoint.bin", fs::copy_options::overwrite_existing);
+  auto r = resume_a();
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("run.seed = 1 in config.toml, 2 in the checkpoint"), std::string::npos) << r.err;
+  fs::copy_file(dir_ / "own.bin", a / "checkpoint.bin", fs::copy_options::overwrite_existing);
+
+  // A config.toml edited after the start.
+  const std::string config = slurp(a / "config.toml");
+  std::string edited = config;
+  edited.replace(edited.find("kn = 1000.0"), 11, "kn = 2000.0");
+  spit(a / "config.toml", edited);
+  r = resume_a();
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("contact.kn = 2000.0 in config.toml, 1000.0 in the checkpoint"), std::string::npos) << r.err;
+  spit(a / "config.toml", config);
+
+  // Outputs of another run.
+  fs::copy_file(a / "snapshots.h5", dir_ / "own.h5");
+  fs::copy_file(b / "snapshots.h5", a / "snapshots.h5", fs::copy_options::overwrite_existing);
+  r = resume_a();
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("snapshots.h5 comes from another run"), std::string::npos) << r.err;
+  fs::copy_file(dir_ / "own.h5", a / "snapshots.h5", fs::copy_options::overwrite_existing);
+
+  EXPECT_EQ(names_in(a), before);  // every refusal left the folder as it was
+  r = resume_a();
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+TEST_F(Cli, ARunKilledDuringItsSetUpResumesFromTheStart) {
+  const fs::path a = dir_ / "a", b = dir_ / "b";
+  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "' " + kTiny, dir_).status, 0);
+  // Killed before the first checkpoint: only config.toml (and the lock) describe the run.
+  ASSERT_EQ(orogen_cli("run --out '" + b.string() + "' --abort-after-outputs 1 " + kTiny, dir_).status, 137);
+  ASSERT_FALSE(fs::exists(b / "checkpoint.bin"));
+  const auto r = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(slurp(b / "run.log").find("starting it again"), std::string::npos);
+  expect_same_run(a, b);
+}
+
+TEST_F(Cli, AnUnstableSetUpExitsWith3AndLeavesNothing) {
+  const fs::path run = dir_ / "soft";
+  const auto r = orogen_cli("run --out '" + run.string() + "' --set contact.kn=16 --set output.progress=never", dir_);
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.err.find("set-up became unstable"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("raise contact.kn"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(run));
+}
+
+TEST_F(Cli, AFullDiskStopsTheRunWithExit1AndItResumesBitForBit) {
+  const fs::path disk = dir_ / "disk";
+  if (!mount_tmpfs(disk, "600k")) GTEST_SKIP() << "cannot mount a tmpfs here (needs root): full-disk test skipped";
+  Unmount unmount{disk};
+  const std::string args = kTiny + " --set layer.length=30 --set output.interval=0.5 --set output.vtp=false";
+  const fs::path whole = dir_ / "whole", run = disk / "run";
+  ASSERT_EQ(orogen_cli("run --out '" + whole.string() + "' " + args, dir_).status, 0);
+  const auto r = orogen_cli("run --out '" + run.string() + "' " + args, dir_);
+  ASSERT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("orogen run --resume " + run.string()), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("terminate called"), std::string::npos) << r.err;
+  ASSERT_TRUE(remount(disk, "size=50m"));
+  const auto resumed = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_EQ(temporary_files_in(run), std::vector<std::string>{});
+  expect_same_run(whole, run);
+}
+
+TEST_F(Cli, AReadOnlyFolderIsRefusedWithExit2AndLeftAsItWas) {
+  const fs::path disk = dir_ / "disk";
+  if (!mount_tmpfs(disk, "20m")) GTEST_SKIP() << "cannot mount a tmpfs here (needs root): read-only test skipped";
+  Unmount unmount{disk};
+  const fs::path run = disk / "run";
+  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
+  const auto before = names_in(disk);
+  ASSERT_TRUE(remount(disk, "ro"));
+  auto r = orogen_cli("run --out '" + (disk / "new").string() + "' " + kTiny, dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("Read-only file system"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find((disk / "new").string()), std::string::npos) << r.err;
+  r = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("cannot write in the run folder " + run.string()), std::string::npos) << r.err;
+  EXPECT_EQ(names_in(disk), before);
+  ASSERT_TRUE(remount(disk, "rw"));
+  r = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  EXPECT_EQ(r.status, 0) << r.err;
 }

@@ -10,6 +10,23 @@ namespace {
 // HDF5 prints its error stack to stderr by default; we turn it into exception text instead.
 void quiet() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 
+// The text between `key = '` and the next quote in HDF5's description, or "".
+std::string quoted_field(const std::string& desc, const std::string& key) {
+  const std::size_t begin = desc.find(key + " = '");
+  if (begin == std::string::npos) return "";
+  const std::size_t from = begin + key.size() + 4;
+  const std::size_t end = desc.find('\'', from);
+  return end == std::string::npos ? "" : desc.substr(from, end - from);
+}
+
+// A failed system call is described by HDF5 with buffer addresses and byte counts; keep what
+// a user can act on: the system's message and the file.
+std::string shorter_reason(const std::string& desc) {
+  const std::string message = quoted_field(desc, "error message"), file = quoted_field(desc, "filename");
+  if (message.empty() || file.empty()) return desc;
+  return message + ", file '" + file + "'";
+}
+
 // The innermost description on HDF5's error stack: the most specific reason it has.
 std::string reason() {
   std::string out;
@@ -21,7 +38,7 @@ std::string reason() {
       },
       &out);
   H5Eclear2(H5E_DEFAULT);
-  return out;
+  return shorter_reason(out);
 }
 
 [[noreturn]] void fail(const std::string& what) {
@@ -223,6 +240,28 @@ File File::create(const std::filesystem::path& path) {
          H5Fclose);
   f.path_ = path;
   return f;
+}
+
+File File::create_in_memory() {
+  quiet();
+  Object fapl(check_id(H5Pcreate(H5P_FILE_ACCESS), "cannot create property list"), H5Pclose);
+  check(H5Pset_fclose_degree(fapl.id(), H5F_CLOSE_SEMI), "cannot set close degree");
+  check(H5Pset_fapl_core(fapl.id(), 1 << 20, false), "cannot set the in-memory driver");
+  // The name is only a label for the core driver without a backing store.
+  File f(check_id(H5Fcreate("orogen-in-memory.h5", H5F_ACC_TRUNC, H5P_DEFAULT, fapl.id()),
+               "cannot create an in-memory file"),
+         H5Fclose);
+  f.path_ = "(in memory)";
+  return f;
+}
+
+std::string File::image() {
+  flush();
+  const ssize_t size = H5Fget_file_image(id(), nullptr, 0);
+  if (size < 0) fail("cannot get the image of file '" + path_.string() + "'");
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (H5Fget_file_image(id(), bytes.data(), bytes.size()) != size) fail("cannot copy the image of file '" + path_.string() + "'");
+  return bytes;
 }
 
 File File::open(const std::filesystem::path& path, Mode mode) {

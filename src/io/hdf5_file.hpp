@@ -45,6 +45,12 @@ class File : public Object {
  public:
   enum class Mode { ReadOnly, ReadWrite };
   static File create(const std::filesystem::path& path);  // truncates an existing file
+  // A file that lives in memory only (HDF5's core driver); image() gives its bytes, which the
+  // caller writes itself. Writers use it so that a failing disk is met in our own code:
+  // HDF5 1.10 cannot recover from a write that fails while it closes a file on disk (it
+  // crashes at exit).
+  static File create_in_memory();
+  std::string image();  // the whole file as bytes (flushes first)
   static File open(const std::filesystem::path& path, Mode mode);
   void flush();  // H5Fflush of the whole file
   const std::filesystem::path& path() const { return path_; }

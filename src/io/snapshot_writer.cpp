@@ -156,26 +156,20 @@ SnapshotWriter SnapshotWriter::reopen(std::filesystem::path path, std::int64_t k
 }
 
 void SnapshotWriter::write_index() const {
-  AtomicPath out(path_);
-  {
-    h5::File f = h5::File::create(out.temp());
-    write_root_attrs(f.id(), meta_, count_);
-    for (std::int64_t k = 0; k < count_; ++k)
-      h5::link_external(f.id(), snapshot_group_name(k), output_file(path_, k).string(), "/");
-    f.close();
-  }
-  out.commit();
+  h5::File f = h5::File::create_in_memory();
+  write_root_attrs(f.id(), meta_, count_);
+  for (std::int64_t k = 0; k < count_; ++k)
+    h5::link_external(f.id(), snapshot_group_name(k), output_file(path_, k).string(), "/");
+  write_file_atomically(path_, f.image());
 }
 
 void SnapshotWriter::append(const SnapshotFrame& frame) {
   validate(frame);
-  AtomicPath out(path_.parent_path() / output_file(path_, count_));
   {
-    h5::File f = h5::File::create(out.temp());
+    h5::File f = h5::File::create_in_memory();
     write_group(f.id(), frame, storage_);
-    f.close();
+    write_file_atomically(path_.parent_path() / output_file(path_, count_), f.image());
   }
-  out.commit();
   ++count_;
   write_index();
 }
@@ -184,16 +178,14 @@ void write_single_snapshot(const std::filesystem::path& path, const SnapshotMeta
                            h5::WriteOptions storage) {
   check_metadata(meta);
   validate(frame);
-  AtomicPath out(path);
+  h5::File f = h5::File::create_in_memory();
+  write_root_attrs(f.id(), meta, 1);
   {
-    h5::File f = h5::File::create(out.temp());
-    write_root_attrs(f.id(), meta, 1);
     h5::Group g = h5::Group::create(f.id(), snapshot_group_name(0));
     write_group(g.id(), frame, storage);
     g.close();
-    f.close();
   }
-  out.commit();
+  write_file_atomically(path, f.image());
 }
 
 SnapshotMetadata read_snapshot_metadata(const std::filesystem::path& path) {

@@ -329,6 +329,7 @@ Config config_for_resume(const RunOptions& opt) {
 }  // namespace
 
 int run_command(const RunOptions& opt) {
+  bool started = false;  // the folder holds a run that --resume can continue
   try {
     if (opt.resume && opt.out.empty()) throw UsageError("--resume needs a run folder");
     const Config config = opt.resume ? config_for_resume(opt) : Config::load(opt.config, opt.overrides);
@@ -375,6 +376,7 @@ int run_command(const RunOptions& opt) {
       if (opt.resume) logger->info("no checkpoint yet (the run was stopped during its set-up): starting it again");
       run.start_fresh();
     }
+    started = true;
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
                  run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
     Progress progress(progress_mode(config));
@@ -396,8 +398,13 @@ int run_command(const RunOptions& opt) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
-    // Anything else (a file that cannot be written, say) ends the run with its reason.
-    std::cerr << "error: " << e.what() << "\n";
+    // Anything else (a file that cannot be written, a full disk) ends the run with its reason.
+    if (auto log = spdlog::get("orogen")) log->error("stopped: {}", e.what());  // to the terminal too
+    else std::cerr << "error: " << e.what() << "\n";
+    if (started)
+      std::cerr << "The run's files up to its last checkpoint are intact: once the cause is fixed, continue it with "
+                   "orogen run --resume "
+                << opt.out.string() << "\n";
     return 1;
   }
 }
