@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -29,6 +30,8 @@ constexpr std::array<const char*, 11> kRunOutputs = {"checkpoint.bin", "snapshot
 constexpr std::array<std::string_view, 6> kKeysOutsideIdentity = {"run.threads",     "run.adapt_threads",
                                                                   "run.adapt_slice", "output.progress",
                                                                   "output.checkpoint_every", "output.vtp"};
+
+constexpr std::array<std::string_view, 2> kExtensionKeys = {"wedge.s_end", "wedge.outputs"};
 
 // "section.key" -> value text of each assignment line of a resolved configuration.
 std::map<std::string, std::string> key_values(std::string_view toml) {
@@ -118,19 +121,38 @@ std::string config_differences(std::string_view here, std::string_view there, st
                        here_name, vb.empty() ? "(absent)" : vb, there_name);
   };
   for (const auto& [key, value] : a) {
+    if (is_extension_key(key)) continue;
     const auto it = b.find(key);
     if (it == b.end()) add(key, value, "");
     else if (it->second != value) add(key, value, it->second);
   }
   for (const auto& [key, value] : b)
-    if (!a.contains(key)) add(key, "", value);
+    if (!a.contains(key) && !is_extension_key(key)) add(key, "", value);
   return out;
 }
+
+bool is_extension_key(std::string_view key) {
+  return std::find(kExtensionKeys.begin(), kExtensionKeys.end(), key) != kExtensionKeys.end();
+}
+
+std::string extension_changes(std::string_view now, std::string_view before) {
+  const auto a = key_values(now), b = key_values(before);
+  std::string out;
+  for (const auto key : kExtensionKeys) {
+    const auto ia = a.find(std::string(key)), ib = b.find(std::string(key));
+    if (ia == a.end() || ib == b.end() || ia->second == ib->second) continue;
+    out += fmt::format("{}{} {} -> {}", out.empty() ? "" : ", ", key, ib->second, ia->second);
+  }
+  return out.empty() ? "no key changed" : out;
+}
+
+std::string extension_keys_text() { return fmt::format("{}", fmt::join(kExtensionKeys, ", ")); }
 
 std::string run_identity(const Config& config) {
   std::string text;
   for (const auto& [key, value] : key_values(config.to_toml()))
-    if (std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) == kKeysOutsideIdentity.end())
+    if (std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) == kKeysOutsideIdentity.end() &&
+        !is_extension_key(key))
       text += key + "=" + value + "\n";
   return fmt::format("{:016x}", fnv1a64(text));
 }

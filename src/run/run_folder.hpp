@@ -50,13 +50,21 @@ void remove_run_outputs(const std::filesystem::path& dir);
 int remove_temporary_files(const std::filesystem::path& dir);
 
 // "contact.kn = 5000.0 in config.toml, 10000.0 in the checkpoint; ..." for every key whose
-// value differs between two resolved configurations (Config::to_toml texts); "" if none.
+// value differs between two resolved configurations (Config::to_toml texts), the keys that
+// extend a run aside; "" if none.
 std::string config_differences(std::string_view here, std::string_view there, std::string_view here_name,
                                std::string_view there_name);
 
+// Keys a resume may change: they move a run's end and the spacing of its outputs, never what
+// it computes up to there (`orogen run --resume DIR --set wedge.s_end=30`).
+bool is_extension_key(std::string_view key);
+std::string extension_keys_text();  // "wedge.s_end, wedge.outputs"
+// "wedge.s_end 8.0 -> 16.0, ..." for the extension keys that differ from `before` to `now`.
+std::string extension_changes(std::string_view now, std::string_view before);
+
 // 16 hex digits identifying what a run computes: a hash of the resolved configuration without
 // the keys that change only speed or display (threads, thread tuning, progress, checkpoint
-// interval, .vtp output). Stored with the outputs and the checkpoint.
+// interval, .vtp output) and the extension keys. Stored with the outputs and the checkpoint.
 std::string run_identity(const Config& config);
 
 }  // namespace orogen

@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -21,6 +22,7 @@
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
 #include "run/run_folder.hpp"
+#include "run/stop_signals.hpp"
 #include "run/thread_tuner.hpp"
 #include "world/world_archive.hpp"
 
@@ -78,16 +80,23 @@ class Run {
 
   // Restores the checkpoint after checking that it, the configuration and the outputs belong
   // to one run; writes nothing, so a refused resume leaves the folder as it was.
-  void load_checkpoint() {
+  // `extending`: the resume changes the run's end (extension keys), so a finished run goes on.
+  void load_checkpoint(bool extending) {
     apply_engine_config(config_, world_);
     const ArchiveReader in(dir_ / "checkpoint.bin");
     check_checkpoint_belongs(in);
     state_.finished = in.get_scalar<std::uint8_t>("run.finished") != 0;
-    if (state_.finished) throw UsageError(fmt::format("the run in {} has already finished", dir_.string()));
+    if (state_.finished && !extending)
+      throw UsageError(fmt::format("the run in {} has already finished; to extend it, give it a later end: orogen run "
+                                   "--resume {} --set wedge.s_end=... (and wedge.outputs for the same output spacing)",
+                                   dir_.string(), dir_.string()));
+    state_.finished = false;
     load_world(in, world_);
     exp_->load(in);
     state_.outputs = in.get_scalar<std::int64_t>("run.outputs");
     in.get("run.output_times", state_.output_times);
+    last_output_step_ = in.get_scalar<std::uint64_t>("run.last_output_step");
+    checkpoint_config_ = in.get_string("run.config");
     check_outputs_belong();
   }
 
@@ -106,11 +115,13 @@ class Run {
     }
     if (write_vtp_) write_pvd_file();
     write_removal_log(dir_ / "removals.csv", world_.removals);
-    last_output_step_ = world_.step;
     log().info("resumed at step {} (t = {:.6g}) after output {}", world_.step, world_.time, state_.outputs - 1);
   }
 
-  void loop(Progress& progress) {
+  // Steps to the end, or until SIGINT/SIGTERM: then it checkpoints the step it is at and
+  // returns the signal (the run resumes from exactly there; no extra output is written, so
+  // the outputs stay those of an uninterrupted run). Returns 0 when the run finished.
+  int loop(Progress& progress) {
     const auto t0 = std::chrono::steady_clock::now();
     const std::uint64_t step0 = world_.step;
     double particle_steps = 0;
@@ -134,6 +145,14 @@ class Run {
       }
       if ((world_.step & 63) == 0 && progress.enabled())
         progress.update(world_.step, world_.time, world_.discs.size(), exp_->fraction_done(world_), exp_->status(world_));
+      if (const int sig = StopSignals::received(); sig != 0) {
+        progress.finish();
+        checkpoint();
+        log().info("stopped by {} at step {} (t = {:.6g}) after output {}, with a checkpoint; continue with orogen run "
+                   "--resume {}",
+                   sig == SIGINT ? "SIGINT" : "SIGTERM", world_.step, world_.time, state_.outputs - 1, dir_.string());
+        return sig;
+      }
     }
     progress.finish();
     if (state_.output_times.empty() || world_.step != last_output_step_) output();
@@ -147,9 +166,11 @@ class Run {
                world_.step, world_.time, world_.step - step0, secs, particle_steps / std::max(secs, 1e-9) / 1e6,
                world_.neighbors.builds);
     if (const auto threads = tuner.summary(); !threads.empty()) log().info("threads: {}", threads);
+    return 0;
   }
 
   World& world() { return world_; }
+  const std::string& checkpoint_config() const { return checkpoint_config_; }
   void abort_after_outputs(std::int64_t n) { abort_after_outputs_ = n; }
 
  private:
@@ -231,6 +252,7 @@ class Run {
     out.put_scalar("run.outputs", state_.outputs);
     out.put("run.output_times", state_.output_times);
     out.put_scalar<std::uint8_t>("run.finished", state_.finished ? 1 : 0);
+    out.put_scalar("run.last_output_step", last_output_step_);
     out.put_string("run.identity", identity_);
     out.put_string("run.config", config_.to_toml());
     out.finish(dir_ / "checkpoint.bin");
@@ -274,6 +296,7 @@ class Run {
   std::int64_t checkpoint_every_;
   bool write_vtp_;
   std::string identity_;
+  std::string checkpoint_config_;  // the configuration the loaded checkpoint was written with
   std::uint64_t last_output_step_ = 0;
   std::int64_t abort_after_outputs_ = 0;
   std::optional<SnapshotWriter> snapshots_;
@@ -317,13 +340,19 @@ void release_new_run(const RunOptions& opt, RunFolderLock& lock) {
   lock.abandon();
 }
 
+// The folder's configuration, with the --set overrides that extend a run (extension keys) and
+// no others.
 Config config_for_resume(const RunOptions& opt) {
-  if (opt.config || !opt.overrides.empty())
-    throw UsageError("--resume takes its configuration from the run folder; drop CONFIG and --set");
+  if (opt.config) throw UsageError("--resume takes its configuration from the run folder; drop CONFIG");
+  for (const auto& o : opt.overrides)
+    if (const std::string key = o.substr(0, o.find('=')); !is_extension_key(key))
+      throw UsageError(fmt::format("--resume takes its configuration from the run folder; --set {} would change what "
+                                   "the run computes (a resume may change only {}, to extend it): start a new run instead",
+                                   o, extension_keys_text()));
   if (!fs::is_directory(opt.out)) throw UsageError(fmt::format("--resume {}: no such folder", opt.out.string()));
   if (!fs::exists(opt.out / "config.toml"))
     throw UsageError(fmt::format("--resume {}: no run there (config.toml is missing)", opt.out.string()));
-  return Config::load(opt.out / "config.toml", {});
+  return Config::load(opt.out / "config.toml", opt.overrides);
 }
 
 }  // namespace
@@ -350,7 +379,7 @@ int run_command(const RunOptions& opt) {
     Run run(config, opt.out, std::move(experiment));
     run.abort_after_outputs(opt.abort_after_outputs);
     if (from_checkpoint) {
-      run.load_checkpoint();
+      run.load_checkpoint(!opt.overrides.empty());
     } else {
       try {
         run.setup();
@@ -371,6 +400,11 @@ int run_command(const RunOptions& opt) {
     if (stale > 0) logger->info("removed {} temporary file(s) left by a killed write", stale);
 
     if (from_checkpoint) {
+      if (!opt.overrides.empty()) {
+        const std::string before = run.checkpoint_config();
+        write_file_atomically(opt.out / "config.toml", config.to_toml());
+        logger->info("extended: {}", extension_changes(config.to_toml(), before));
+      }
       run.reopen_outputs();
     } else {
       if (opt.resume) logger->info("no checkpoint yet (the run was stopped during its set-up): starting it again");
@@ -380,8 +414,9 @@ int run_command(const RunOptions& opt) {
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
                  run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
     Progress progress(progress_mode(config));
+    const StopSignals stop_signals;
     try {
-      run.loop(progress);
+      if (const int sig = run.loop(progress); sig != 0) return 128 + sig;
     } catch (const InstabilityError& e) {
       progress.finish();
       logger->error("stopped: {}", e.what());
