@@ -2,6 +2,7 @@
 // NaN run, or blaming the wrong key must end with exit 2 before the run and a message naming
 // the key (or file, or argument) and what is allowed. Each run here is refused at once.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <climits>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include "config/config.hpp"
 #include "config/schema.hpp"
 #include "experiments/experiment.hpp"
+#include "run/thread_tuner.hpp"
 #include "temp_dir_fixture.hpp"
 
 namespace fs = std::filesystem;
@@ -160,6 +162,29 @@ TEST_F(BadInput, ThreadsResumeAndEnvironment) {
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("--resume needs a run folder"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// Case 11: set-up's settling loops step under the thread tuner (step_with_tuning); it steps
+// until done, switches counts with a tiny slice, and leaves the team size as it found it, also
+// when a step throws.
+TEST(SetupTuning, StepsUntilDoneAndRestoresTheTeamSize) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(2);
+  int steps = 0;
+  bool saw_one = false;
+  step_with_tuning(true, 1e-9, [&] {
+    saw_one |= omp_get_max_threads() == 1;
+    return ++steps < 200;
+  }, [] { return 100.0; });
+  EXPECT_EQ(steps, 200);
+  EXPECT_TRUE(saw_one);  // it probed one thread
+  EXPECT_EQ(omp_get_max_threads(), 2);
+  EXPECT_THROW(step_with_tuning(true, 1e-9, [&]() -> bool {
+    if (omp_get_max_threads() == 1) throw std::runtime_error("unstable");
+    return true;
+  }, [] { return 100.0; }), std::runtime_error);
+  EXPECT_EQ(omp_get_max_threads(), 2);
+  omp_set_num_threads(before);
 }
 
 }  // namespace

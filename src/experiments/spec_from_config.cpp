@@ -39,8 +39,8 @@ void check_material_size(const Config& c, double length, double thickness,
   if (!(discs <= kMaxParticles))
     throw config_error(c.sources_of(keys), "", "",
                        fmt::format("the run would hold about {:.3g} discs ({:.4g} d x {:.4g} d of material), more "
-                                   "than the limit of {:.3g}; make the layer smaller or the discs larger. From {}",
-                                   discs, length, thickness, kMaxParticles, c.describe(keys)));
+                                   "than the limit of {:g} million; make the layer smaller or the discs larger. From {}",
+                                   discs, length, thickness, kMaxParticles / 1e6, c.describe(keys)));
   // Surface columns are column_width_factor mean radii wide (a mean radius is at least d_min / 2).
   keys.push_back("layer.column_width_factor");
   const double columns = length / (c.get_float("layer.column_width_factor") * 0.5 * d_min);
@@ -48,8 +48,8 @@ void check_material_size(const Config& c, double length, double thickness,
     throw config_error(c.sources_of(keys), "layer.column_width_factor",
                        format_value(ConfigValue{c.get_float("layer.column_width_factor")}),
                        fmt::format("the surface would need about {:.3g} columns over {:.4g} d, more than the limit of "
-                                   "{:.3g}; use wider columns or a shorter layer. From {}",
-                                   columns, length, kMaxParticles, c.describe(keys)));
+                                   "{:g} million; use wider columns or a shorter layer. From {}",
+                                   columns, length, kMaxParticles / 1e6, c.describe(keys)));
 }
 
 SettleSpec settle_spec(const Config& c) {
@@ -60,6 +60,8 @@ SettleSpec settle_spec(const Config& c) {
   s.relax_time = c.get_float("settle.relax_time");
   s.mu = c.get_float("settle.mu");
   s.column_width_factor = c.get_float("layer.column_width_factor");
+  s.adapt_threads = c.get_bool("run.adapt_threads");
+  s.adapt_slice = c.get_float("run.adapt_slice");
   return s;
 }
 
