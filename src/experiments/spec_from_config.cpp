@@ -23,7 +23,7 @@ PackingSpec packing_spec(const Config& c) {
   if (p.d_min > p.d_max)
     throw config_error(c.sources_of({"particles.d_min", "particles.d_max"}), "particles.d_min",
                        fmt::format("{}", p.d_min),
-                       fmt::format("must not exceed particles.d_max ({})", c.describe({"particles.d_max"})));
+                       fmt::format("must not exceed particles.d_max = {} ({})", p.d_max, c.source_of("particles.d_max")));
   return p;
 }
 
