@@ -164,6 +164,16 @@ TEST_F(BadInput, ThreadsResumeAndEnvironment) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
+// Render options out of range aborted in the renderer (--width -5) or were taken (--every 0).
+TEST_F(BadInput, RenderOptionsOutOfRange) {
+  for (const std::string arg : {"--width -5", "--width ''", "--every 0", "--fps 0"}) {
+    SCOPED_TRACE(arg);
+    const auto r = testing::run_orogen("render '" + dir_.string() + "' " + arg, dir_);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find(arg.substr(0, arg.find(' '))), std::string::npos) << r.err;
+  }
+}
+
 // Case 11: set-up's settling loops step under the thread tuner (step_with_tuning); it steps
 // until done, switches counts with a tiny slice, and leaves the team size as it found it, also
 // when a step throws.

@@ -41,11 +41,20 @@ int main(int argc, char** argv) {
   render_cmd->add_option("dir", render_dir, "run folder")->required();
   render_cmd->add_option("--color", render.color,
                          "horizons | cluster | field:NAME (field:max_rel_disp uses the hot colormap)")->capture_default_str();
-  render_cmd->add_option("--width", render.width_px, "picture width in pixels")->capture_default_str();
-  render_cmd->add_option("--every", render.every, "draw every n-th output")->capture_default_str();
+  render_cmd->add_option("--width", render.width_px, "picture width in pixels")
+      ->capture_default_str()
+      ->check(not_empty)
+      ->check(CLI::Range(200, 16384));  // narrower leaves no room for the plot; wider than the renderer draws
+  render_cmd->add_option("--every", render.every, "draw every n-th output")
+      ->capture_default_str()
+      ->check(not_empty)
+      ->check(CLI::Range(1, 1000000));
   render_cmd->add_option("--frames-dir", render.frames_name,
                          "subfolder for the frames (the animation is named after it)")->capture_default_str();
-  render_cmd->add_option("--fps", render.fps, "animation frames per second")->capture_default_str();
+  render_cmd->add_option("--fps", render.fps, "animation frames per second")
+      ->capture_default_str()
+      ->check(not_empty)
+      ->check(CLI::Range(1, 240));
   render_cmd->add_flag("!--no-animation", render.animation, "only the PNG frames");
   render_cmd->add_flag("--vectors", render.vectors,
                        "draw each disc's displacement over the last three outputs as an arrow");
