@@ -41,10 +41,10 @@ struct BadFile {
 
 TEST(Config, BadFilesNameSourceKeyValueAndAllowed) {
   const std::vector<BadFile> cases = {
-      {"[contact]\nkn = -5\n", {"contact.kn = -5", "must be > 0"}},
-      {"[contact]\nkn = \"stiff\"\n", {"contact.kn = \"stiff\"", "expected a number > 0"}},
-      {"[particles]\nd_min = 0\n", {"particles.d_min = 0", "must be > 0 and <= 1"}},
-      {"[particles]\nd_max = 1.5\n", {"particles.d_max = 1.5", "must be > 0 and <= 1"}},
+      {"[contact]\nkn = -5\n", {"contact.kn = -5", "must be >= 0.001 and <= 1e+12"}},
+      {"[contact]\nkn = \"stiff\"\n", {"contact.kn = \"stiff\"", "expected a number >= 0.001"}},
+      {"[particles]\nd_min = 0\n", {"particles.d_min = 0", "must be >= 0.01 and <= 1"}},
+      {"[particles]\nd_max = 1.5\n", {"particles.d_max = 1.5", "must be >= 0.01 and <= 1"}},
       {"[contact]\nrestitution = 0.1\n", {"contact.restitution = 0.1", "must be >= 0.14 and <= 1"}},
       {"[run]\nseed = 2.5\n", {"run.seed = 2.5", "expected an integer >= 0"}},
       {"[run]\nseed = -1\n", {"run.seed = -1", "must be >= 0"}},
@@ -55,7 +55,7 @@ TEST(Config, BadFilesNameSourceKeyValueAndAllowed) {
        {"output.progress = \"sometimes\"", "one of \"auto\", \"always\", \"never\""}},
       {"[output]\nvtp = 1\n", {"output.vtp = 1", "expected true or false"}},
       {"[settle]\nmax_time = nan\n", {"settle.max_time = nan", "finite number > 0"}},
-      {"[time]\ndt_fraction = 0.0\n", {"time.dt_fraction = 0.0", "must be > 0 and <= 1"}},
+      {"[time]\ndt_fraction = 0.0\n", {"time.dt_fraction = 0.0", "must be >= 0.001 and <= 1"}},
       {"[contact]\nkk = 5\n",
        {"contact.kk = 5", "unknown key", "did you mean 'contact.kn'?",
         "keys in [contact]: kn, ks_ratio, mu, mu_wall, restitution, tangential_damping_ratio"}},
@@ -65,7 +65,7 @@ TEST(Config, BadFilesNameSourceKeyValueAndAllowed) {
         "sections: run, particles, layer, contact, time, neighbor, settle, wedge, repose, singly, biaxial, output"}},
       {"kn = 5\n", {"kn = 5", "every key belongs in a section: run, particles", "did you mean 'contact.kn'?"}},
       {"contact = 5\n", {"contact = 5", "expected a table"}},
-      {"[contact]\nmu = 0.3\nkn = 0\n", {"line 3", "contact.kn = 0", "must be > 0"}},
+      {"[contact]\nmu = 0.3\nkn = 0\n", {"line 3", "contact.kn = 0", "must be >= 0.001"}},
       {"[contact]\nmu = 0.3\nkn = \n", {"line 3, column", "TOML syntax error"}},
       {"[contact]\nkn = 1\nkn = 2\n", {"line 3", "TOML syntax error"}},
   };
@@ -84,7 +84,7 @@ TEST(Config, BadOverridesNameSetKeyValueAndAllowed) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
       {"contact.kn", {"--set", "contact.kn", "expected section.key=value"}},
       {"=5", {"--set", "=5", "expected section.key=value"}},
-      {"contact.kn=stiff", {"--set: contact.kn = stiff", "expected a number > 0"}},
+      {"contact.kn=stiff", {"--set: contact.kn = stiff", "expected a number >= 0.001"}},
       {"contact.kk=5",
        {"--set: contact.kk = 5", "did you mean 'contact.kn'?", "keys in [contact]"}},
       {"run.threads=-2", {"--set: run.threads = -2", "must be >= 0"}},
@@ -176,7 +176,7 @@ TEST(Config, ResolvedCopyRoundTripsExactly) {
   EXPECT_NE(text.find("ke_threshold = 1e-06\n"), std::string::npos) << text;
   EXPECT_NE(text.find("dt = 0.0\n"), std::string::npos) << text;
   EXPECT_NE(text.find("seed = 1\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("(allowed: > 0 and <= 1)\nd_min"), std::string::npos) << text;
+  EXPECT_NE(text.find("(allowed: >= 0.01 and <= 1)\nd_min"), std::string::npos) << text;
   const Config b = Config::load(write_temp("resolved.toml", text), {});
   EXPECT_EQ(b.to_toml(), text);
   EXPECT_EQ(b.get_float("contact.mu"), 0.30000000000000004);

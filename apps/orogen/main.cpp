@@ -15,15 +15,22 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", OROGEN_VERSION);
 
+  // CLI11 reads an empty value as the default; for a number that is a mistake to report.
+  const CLI::Validator not_empty(
+      [](std::string& value) { return value.empty() ? std::string("an empty value (a number is needed)") : ""; },
+      "", "not empty");
+
   orogen::RunOptions run;
   std::string config_path, out = "out";
   auto* run_cmd = app.add_subcommand("run", "run an experiment (no CONFIG: the built-in default)");
   run_cmd->add_option("config", config_path, "TOML configuration file");
   run_cmd->add_option("--out,-o", out, "output folder")->capture_default_str();
   run_cmd->add_option("--set", run.overrides, "override a key: --set contact.mu=0.2 (repeatable)");
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: run.threads, 0 = all cores)");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: run.threads, 0 = all cores)")
+      ->check(not_empty)
+      ->check(CLI::Range(0, orogen::kMaxThreads));
   std::string resume_dir;
-  run_cmd->add_option("--resume", resume_dir, "continue the killed run in this folder");
+  auto* resume_opt = run_cmd->add_option("--resume", resume_dir, "continue the killed run in this folder");
   run_cmd->add_option("--abort-after-outputs", run.abort_after_outputs,
                       "test hook: exit 137 with no cleanup once this many outputs are written")
       ->group("");  // hidden
@@ -34,11 +41,20 @@ int main(int argc, char** argv) {
   render_cmd->add_option("dir", render_dir, "run folder")->required();
   render_cmd->add_option("--color", render.color,
                          "horizons | cluster | field:NAME (field:max_rel_disp uses the hot colormap)")->capture_default_str();
-  render_cmd->add_option("--width", render.width_px, "picture width in pixels")->capture_default_str();
-  render_cmd->add_option("--every", render.every, "draw every n-th output")->capture_default_str();
+  render_cmd->add_option("--width", render.width_px, "picture width in pixels")
+      ->capture_default_str()
+      ->check(not_empty)
+      ->check(CLI::Range(200, 16384));  // narrower leaves no room for the plot; wider than the renderer draws
+  render_cmd->add_option("--every", render.every, "draw every n-th output")
+      ->capture_default_str()
+      ->check(not_empty)
+      ->check(CLI::Range(1, 1000000));
   render_cmd->add_option("--frames-dir", render.frames_name,
                          "subfolder for the frames (the animation is named after it)")->capture_default_str();
-  render_cmd->add_option("--fps", render.fps, "animation frames per second")->capture_default_str();
+  render_cmd->add_option("--fps", render.fps, "animation frames per second")
+      ->capture_default_str()
+      ->check(not_empty)
+      ->check(CLI::Range(1, 240));
   render_cmd->add_flag("!--no-animation", render.animation, "only the PNG frames");
   render_cmd->add_flag("--vectors", render.vectors,
                        "draw each disc's displacement over the last three outputs as an arrow");
@@ -54,10 +70,12 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("file", sweep_file, "sweep file (TOML, see docs/sweeps.md)")->required();
   sweep_cmd->add_option("--out,-o", sweep_out, "sweep folder: runs/, logs/, results.csv, results.md")->required();
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "runs at once (default: hardware threads / --threads)")
-      ->check(CLI::PositiveNumber);
+      ->check(not_empty)
+      ->check(CLI::Range(1, 4096));
   sweep_cmd->add_option("--threads", sweep.threads, "threads of each run (more only helps from 16384 discs up)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(not_empty)
+      ->check(CLI::Range(1, orogen::kMaxThreads));
   sweep_cmd->add_flag("--render", sweep.render, "render each finished run (horizons and max_rel_disp)");
   sweep_cmd->add_flag("--dry-run", sweep.dry_run, "check the sweep, list its runs and what each needs; run nothing");
 
@@ -80,6 +98,10 @@ int main(int argc, char** argv) {
   }
   if (*run_cmd) {
     if (!config_path.empty()) run.config = config_path;
+    if (resume_opt->count() > 0 && resume_dir.empty()) {
+      std::cerr << "error: --resume needs a run folder (got an empty one)\n";
+      return 2;
+    }
     if (!resume_dir.empty()) { run.resume = true; run.out = resume_dir; }
     else run.out = out;
     return orogen::run_command(run);

@@ -3,13 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace orogen {
 
 std::size_t Surface::column_of(double x) const {
   const double k = std::floor((x - x_lo) / width);
   if (k < 0) return 0;
-  return std::min(static_cast<std::size_t>(k), height.size() - 1);
+  // Compared as doubles first: casting a k beyond size_t (or NaN) would be undefined.
+  if (!(k < static_cast<double>(height.size()))) return height.size() - 1;
+  return static_cast<std::size_t>(k);
 }
 
 double Surface::at(double x) const {
@@ -21,7 +25,14 @@ Surface measure_surface(const Discs& d, double x_lo, double x_hi, double column_
   Surface s;
   s.x_lo = x_lo;
   s.width = column_width;
-  const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil((x_hi - x_lo) / column_width)));
+  const double columns = std::max(1.0, std::ceil((x_hi - x_lo) / column_width));
+  // Configurations are checked for this with key names (check_material_size); a library caller
+  // gets an exception rather than a cast of inf or a vector of 1e20 columns.
+  if (!(columns <= kMaxSurfaceColumns))
+    throw std::length_error("measure_surface: " + std::to_string(columns) + " columns of width " +
+                            std::to_string(column_width) + " over [" + std::to_string(x_lo) + ", " +
+                            std::to_string(x_hi) + "]");
+  const auto n = static_cast<std::size_t>(columns);
   s.height.assign(n, std::numeric_limits<double>::quiet_NaN());
   s.top.assign(n, -1);
   for (std::size_t i = 0; i < d.size(); ++i) {

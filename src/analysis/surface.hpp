@@ -19,6 +19,9 @@ struct Surface {
   double at(double x) const;
 };
 
+// More columns than this is an input error (a column width near zero, a layer of 1e300 d).
+constexpr double kMaxSurfaceColumns = 1e9;
+
 // Builds the surface from all discs, columns of the given width starting at x_lo.
 Surface measure_surface(const Discs& discs, double x_lo, double x_hi, double column_width);
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <type_traits>
 #include <utility>
@@ -195,14 +196,85 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+// toml++ parses nested tables, arrays and dotted keys recursively, so a hostile file 50,000
+// levels deep overflows the stack. This scan runs first and refuses deep nesting: the bracket
+// depth ([ and {, across lines) and the dots of one line (a dotted key or [header]; the dot of
+// a number such as 1.5 does not count), outside strings and comments. Returns the first line
+// over kMaxConfigNesting (1 for a one-line text), or 0.
+std::size_t too_deep_line(std::string_view text) {
+  auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  std::size_t line = 1;
+  int depth = 0, dots = 0;
+  char quote = 0;  // the open string's quote, or 0 (strings may span lines)
+  bool comment = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
+    if (ch == '\n') {
+      ++line;
+      comment = false;
+      dots = 0;
+      continue;
+    }
+    if (comment) continue;
+    if (quote) {
+      if (escaped) escaped = false;
+      else if (ch == '\\' && quote == '"') escaped = true;
+      else if (ch == quote) quote = 0;
+      continue;
+    }
+    switch (ch) {
+      case '"': case '\'': quote = ch; break;
+      case '#': comment = true; break;
+      case '[': case '{': ++depth; break;
+      case ']': case '}': --depth; break;
+      case '.':
+        if (!(i > 0 && digit(text[i - 1]) && i + 1 < text.size() && digit(text[i + 1]))) ++dots;
+        break;
+      default: break;
+    }
+    if (depth > kMaxConfigNesting || dots > kMaxConfigNesting) return line;
+  }
+  return 0;
+}
+
+std::string nesting_text() {
+  return "nested too deeply (more than " + std::to_string(kMaxConfigNesting) +
+         " levels of [ ], { } or dots in a key); Orogen's keys are section.key";
+}
+
+// The file's text; refuses what is not a regular file (a directory, /dev/zero, a pipe) and
+// files over kMaxConfigBytes, which no configuration comes near, before reading them.
+std::string read_config_text(const std::filesystem::path& file) {
+  const std::string path = file.string();
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw config_error(path, "", "", "cannot read the file (does it exist?)");
+  if (!std::filesystem::is_regular_file(status))
+    throw config_error(path, "", "", "not a regular file; a configuration is a TOML file");
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec || size > kMaxConfigBytes)
+    throw config_error(path, "", "",
+                       "the file is larger than " + std::to_string(kMaxConfigBytes) +
+                           " bytes (1 MiB), the most a configuration file may hold");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw config_error(path, "", "", "cannot read the file (does it exist?)");
+  std::string text(kMaxConfigBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  // The file may have grown since it was measured.
+  if (text.size() > kMaxConfigBytes)
+    throw config_error(path, "", "", "the file is larger than 1 MiB, the most a configuration file may hold");
+  return text;
+}
+
 toml::table parse_file(const std::filesystem::path& file) {
   const std::string path = file.string();
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file)) throw config_error(path, "", "", "cannot read the file (does it exist?)");
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_config_text(file);
+  if (const std::size_t line = too_deep_line(text))
+    throw config_error(path + ", line " + std::to_string(line), "", "", nesting_text());
   try {
-    return toml::parse(text.str(), path);
+    return toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
     throw config_error(
@@ -289,6 +361,7 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
     if (spec.type == KeyType::String && !quoted) {
       cfg.values_[*idx] = convert(spec, toml::value<std::string>(raw), kSetSource, shown);
     } else {
+      if (too_deep_line(raw)) throw config_error(kSetSource, name, "", nesting_text());
       toml::table parsed;
       try {
         parsed = toml::parse("v = " + raw);
@@ -319,6 +392,13 @@ std::int64_t Config::get_int(std::string_view key) const {
   return std::get<std::int64_t>(lookup(key, KeyType::Int));
 }
 
+int Config::get_int32(std::string_view key) const {
+  const std::int64_t v = get_int(key);
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    throw std::logic_error("Config: key '" + std::string(key) + "' = " + std::to_string(v) + " does not fit an int");
+  return static_cast<int>(v);
+}
+
 bool Config::get_bool(std::string_view key) const {
   return std::get<bool>(lookup(key, KeyType::Bool));
 }
@@ -333,6 +413,29 @@ const std::string& Config::source_of(std::string_view key) const {
   const auto idx = find_key(key);
   if (!idx) throw std::logic_error("Config: unknown key '" + std::string(key) + "'");
   return sources_[*idx];
+}
+
+std::string Config::describe(const std::vector<std::string_view>& keys) const {
+  std::string out;
+  for (const auto key : keys) {
+    const auto idx = find_key(key);
+    if (!idx) throw std::logic_error("Config: unknown key '" + std::string(key) + "'");
+    out += (out.empty() ? "" : ", ") + std::string(key) + " = " + format_value(values_[*idx]) + " (" +
+           sources_[*idx] + ")";
+  }
+  return out;
+}
+
+std::string Config::sources_of(const std::vector<std::string_view>& keys) const {
+  std::vector<std::string> seen;
+  for (const auto key : keys) {
+    const std::string& src = source_of(key);
+    if (src != kDefault && std::find(seen.begin(), seen.end(), src) == seen.end()) seen.push_back(src);
+  }
+  if (seen.empty()) return kDefault;
+  std::string out;
+  for (const auto& s : seen) out += (out.empty() ? "" : " and ") + s;
+  return out;
 }
 
 std::string Config::to_toml() const {

@@ -35,6 +35,8 @@ class Config {
   // Typed getters; an unknown key or the wrong getter is a programming error (std::logic_error).
   double get_float(std::string_view key) const;
   std::int64_t get_int(std::string_view key) const;
+  // An integer key as int: every Int key's range lies inside int (schema.cpp), and this checks it.
+  int get_int32(std::string_view key) const;
   bool get_bool(std::string_view key) const;
   const std::string& get_string(std::string_view key) const;
 
@@ -42,6 +44,13 @@ class Config {
   bool was_set(std::string_view key) const;
   // Where the key's value came from: the file path, "--set", or "default".
   const std::string& source_of(std::string_view key) const;
+
+  // For messages of derived bounds (a limit computed from other keys): each key with its value
+  // and where it came from, "contact.kn = 10000.0 (default), time.dt_fraction = 1.0 (--set)".
+  std::string describe(const std::vector<std::string_view>& keys) const;
+  // Where a derived bound's keys were set, for the message's heading: the distinct sources other
+  // than the default ("--set", "FILE and --set"), or "default" when none was set.
+  std::string sources_of(const std::vector<std::string_view>& keys) const;
 
   // The fully resolved configuration as TOML, every key in schema order with its doc; loading
   // it back gives the same configuration (floats round-trip exactly).

@@ -19,8 +19,9 @@ KeySpec real(std::string name, double def, std::optional<Bound> lo, std::optiona
              std::string doc) {
   return {std::move(name), KeyType::Float, def, lo, hi, {}, std::move(doc)};
 }
-KeySpec integer(std::string name, std::int64_t def, std::optional<Bound> lo, std::string doc) {
-  return {std::move(name), KeyType::Int, def, lo, none, {}, std::move(doc)};
+// Integer keys always have both bounds, well inside int, so that every use may cast to int.
+KeySpec integer(std::string name, std::int64_t def, Bound lo, Bound hi, std::string doc) {
+  return {std::move(name), KeyType::Int, def, lo, hi, {}, std::move(doc)};
 }
 KeySpec boolean(std::string name, bool def, std::string doc) {
   return {std::move(name), KeyType::Bool, def, none, none, {}, std::move(doc)};
@@ -55,8 +56,8 @@ const std::vector<KeySpec>& schema() {
       text("run.experiment", "wedge", {"packing", "wedge", "repose", "singly_vergent", "biaxial"},
            "what the run does: settle a packing, grow a doubly-vergent wedge, an angle of repose "
            "experiment, a singly-vergent critical wedge, or a biaxial test of bulk friction"),
-      integer("run.seed", 1, ge(0), "seed of the packing generator"),
-      integer("run.threads", 0, ge(0), "OpenMP threads, 0 = all cores"),
+      integer("run.seed", 1, ge(0), le(2147483647), "seed of the packing generator"),
+      integer("run.threads", 0, ge(0), le(kMaxThreads), "OpenMP threads, 0 = all cores"),
       boolean("run.adapt_threads", true,
               "with more than one thread, time one thread against all of them now and then during the run "
               "and step with the faster (on a shared machine a second core is at times not a core of its "
@@ -66,15 +67,17 @@ const std::vector<KeySpec>& schema() {
 
       text("particles.packing", "random_clusters", {"hexagonal", "random_discs", "random_clusters"},
            "how the layer is built: hexagonal discs, random discs or random rigid clusters"),
-      real("particles.d_min", 0.7, gt(0), le(1), "smallest disc diameter [d]"),
-      real("particles.d_max", 1.0, gt(0), le(1), "largest disc diameter [d]"),
+      real("particles.d_min", 0.7, ge(0.01), le(1), "smallest disc diameter [d]"),
+      real("particles.d_max", 1.0, ge(0.01), le(1), "largest disc diameter [d]"),
 
-      real("layer.length", 100.0, gt(0), none, "length of the settled layer [d]"),
-      real("layer.thickness", 10.0, gt(0), none, "target thickness h0 of the settled layer [d]"),
-      real("layer.column_width_factor", 2.3, gt(0), none,
+      real("layer.length", 100.0, ge(3), none,
+           "length of the settled layer; at least 3 so that a row of clusters fits, and at most as long as keeps the estimated particle count within 50 million [d]"),
+      real("layer.thickness", 10.0, ge(3), none,
+           "target thickness h0 of the settled layer; at least 3, as thinner layers are trimmed away entirely [d]"),
+      real("layer.column_width_factor", 2.3, ge(0.5), le(100),
            "surface columns are this many mean radii wide [-]"),
 
-      real("contact.kn", 10000.0, gt(0), none, "normal stiffness k_n [m g / d]"),
+      real("contact.kn", 10000.0, ge(0.001), le(1e12), "normal stiffness k_n [m g / d]"),
       real("contact.ks_ratio", 0.5, gt(0), le(1), "tangential to normal stiffness k_s / k_n [-]"),
       real("contact.mu", 0.3, ge(0), none, "inter-particle friction coefficient [-]"),
       real("contact.mu_wall", 0.3, ge(0), none, "friction coefficient of rough walls [-]"),
@@ -84,11 +87,11 @@ const std::vector<KeySpec>& schema() {
 
       real("time.dt", 0.0, ge(0), none,
            "time step, 0 = computed from stiffness and smallest mass [sqrt(d/g)]"),
-      real("time.dt_fraction", 0.5, gt(0), le(1),
+      real("time.dt_fraction", 0.5, ge(0.001), le(1),
            "fraction of the stability limit used when dt = 0; 0.5 keeps the explicit dashpot stable in dense packings [-]"),
 
       real("neighbor.skin", 0.3, gt(0), none, "Verlet list skin [d]"),
-      integer("neighbor.sort_every", 10, ge(0),
+      integer("neighbor.sort_every", 10, ge(0), le(1000000),
               "re-order discs in space every this many list builds, 0 = never"),
 
       real("settle.drag", 1.0, ge(0), none, "extra viscous drag rate while settling [sqrt(g/d)]"),
@@ -113,16 +116,16 @@ const std::vector<KeySpec>& schema() {
            "traction drag coefficient gamma_b of the pro-side plate (eq. 4.1), applied implicitly "
            "over a step so that any value is stable [m sqrt(g/d)]"),
       real("wedge.s_end", 8.0, gt(0), none, "run until this normalised convergence S = v t / h0 [-]"),
-      integer("wedge.outputs", 100, ge(1), "output steps over the run"),
+      integer("wedge.outputs", 100, ge(1), le(kMaxOutputs), "output steps over the run"),
       real("wedge.window", 6.0, gt(0), none,
            "the active region reaches this far beyond each deformation front [h0]"),
       real("wedge.initial_active", 12.0, gt(0), none,
            "pro-side length of the active region before any front forms: long enough for basal "
            "traction to break the layer at the S-point, not at the kinematic slab [h0]"),
       real("wedge.retro_length", 8.0, gt(0), none, "length of the retro-side layer [h0]"),
-      real("wedge.tile_length", 8.0, gt(0), none, "length of the settled tile that feeds the layer [h0]"),
+      real("wedge.tile_length", 8.0, ge(1), none, "length of the settled tile that feeds the layer [h0]"),
       real("wedge.erosion_height", 0.0, ge(0), none, "erode above this elevation, 0 = no erosion [h0]"),
-      integer("wedge.erosion_every", 50, ge(1), "time steps between erosion passes"),
+      integer("wedge.erosion_every", 50, ge(1), le(1000000), "time steps between erosion passes"),
       real("wedge.marker_height", 1.5, gt(0), none, "marker fronts are measured at this elevation [h0]"),
       text("wedge.packing_file", "", {},
            "settled tile from a packing run (its packing.h5); empty = settle one first"),
@@ -131,7 +134,8 @@ const std::vector<KeySpec>& schema() {
       text("repose.variant", "slump", {"slump", "ledge"},
            "slump: lowermost particles fixed, the whole side wall removed (thesis 3.2.1); ledge: rough "
            "base, the lower part of the wall kept with the particles touching it fixed (3.2.2)"),
-      real("repose.size", 40.0, gt(0), none, "side of the square block of settled material [d]"),
+      real("repose.size", 40.0, ge(8), none,
+           "side of the square block of settled material; from 8 on the slope has enough surface columns for the angle to be measured [d]"),
       real("repose.fixed_height", 1.0, ge(0), none,
            "slump: particles whose centre lies below this are fixed [d]"),
       real("repose.ledge_fraction", 0.2, gt(0), le(1),
@@ -145,7 +149,7 @@ const std::vector<KeySpec>& schema() {
       real("singly.speed", 0.025, gt(0), none, "backstop speed [sqrt(g d)]"),
       real("singly.mu_b", 0.2, ge(0), none, "basal (Coulomb) friction coefficient mu_b [-]"),
       real("singly.shortening", 5.0, gt(0), none, "run until the backstop has moved this far [h0]"),
-      integer("singly.outputs", 50, ge(1), "output steps over the run"),
+      integer("singly.outputs", 50, ge(1), le(kMaxOutputs), "output steps over the run"),
       real("singly.steady_from", 0.5, ge(0), le(1),
            "the steady taper of the summary averages the outputs after this fraction of the run [-]"),
       // [biaxial]: biaxial test of the bulk friction of a packing
@@ -158,14 +162,14 @@ const std::vector<KeySpec>& schema() {
            "axial strain rate of the top wall (constant speed, of the height when shearing "
            "begins); slow enough to be quasi-static [1 / sqrt(d/g)]"),
       real("biaxial.strain_end", 0.2, gt(0), le(0.5), "shear until this axial strain [-]"),
-      integer("biaxial.outputs", 100, ge(6), "output steps over the shearing"),
+      integer("biaxial.outputs", 100, ge(6), le(kMaxOutputs), "output steps over the shearing"),
       real("biaxial.servo_gain", 1.0, gt(0), le(2),
            "stress-controlled walls move at gain x stress error x d / (k_n dt): the fraction of the error "
            "removed per step against a rigid sample with one contact per d of wall; unstable "
            "from about 2.5 [-]"),
 
       real("output.interval", 10.0, gt(0), none, "model time between output steps [sqrt(d/g)]"),
-      integer("output.checkpoint_every", 10, ge(0),
+      integer("output.checkpoint_every", 10, ge(0), le(1000000),
               "write a checkpoint every this many output steps, 0 = only at the end"),
       boolean("output.vtp", true, "write the ParaView series"),
       text("output.progress", "auto", {"auto", "always", "never"},

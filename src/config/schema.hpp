@@ -12,6 +12,13 @@
 
 namespace orogen {
 
+// Limits on input, beyond each key's range (docs/configuration.md lists them).
+constexpr int kMaxThreads = 1024;          // run.threads and --threads
+constexpr int kMaxOutputs = 100000;        // *.outputs
+constexpr double kMaxParticles = 50e6;     // estimated discs (and surface columns) of a run
+constexpr std::uintmax_t kMaxConfigBytes = 1 << 20;  // size of a configuration file
+constexpr int kMaxConfigNesting = 32;      // brackets and dotted-key levels in a configuration file
+
 enum class KeyType : std::uint8_t { Float, Int, Bool, String };
 
 // A configuration value; the alternative always matches the key's KeyType.

@@ -339,18 +339,21 @@ std::unique_ptr<Experiment> make_biaxial_experiment(const Config& c) {
   s.sigma3 = c.get_float("biaxial.sigma3");
   s.strain_rate = c.get_float("biaxial.strain_rate");
   s.strain_end = c.get_float("biaxial.strain_end");
-  s.outputs = static_cast<int>(c.get_int("biaxial.outputs"));
+  s.outputs = c.get_int32("biaxial.outputs");
   s.servo_gain = c.get_float("biaxial.servo_gain");
   s.packing = packing_spec(c);
   s.settle = settle_spec(c);
+  check_material_size(c, s.width, s.height, {"biaxial.width", "biaxial.height"});
   // Quasi-static: inertial number below 1e-2 even at the lowest mean stress, sigma3, for the
   // largest discs (MODEL's bulk friction is the rate-independent limit).
   const double inertial = 2 * s.strain_rate * s.packing.d_max / std::sqrt(s.sigma3 * kUnitDiscMass);
   if (inertial > 1e-2)
-    throw config_error(c.source_of("biaxial.strain_rate"), "biaxial.strain_rate", fmt::format("{}", s.strain_rate),
+    throw config_error(c.sources_of({"biaxial.strain_rate", "biaxial.sigma3", "particles.d_max"}),
+                       "biaxial.strain_rate", fmt::format("{}", s.strain_rate),
                        fmt::format("a quasi-static rate: inertial number 2 rate d sqrt(rho / sigma3) = {:.3g} is above "
-                                   "1e-2 (use biaxial.strain_rate <= {:.3g}, or a larger biaxial.sigma3)",
-                                   inertial, s.strain_rate * 1e-2 / inertial));
+                                   "1e-2 (use biaxial.strain_rate <= {:.3g}, or a larger biaxial.sigma3; from {})",
+                                   inertial, s.strain_rate * 1e-2 / inertial,
+                                   c.describe({"biaxial.sigma3", "particles.d_max"})));
   return std::make_unique<BiaxialExperiment>(std::move(s));
 }
 

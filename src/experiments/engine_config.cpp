@@ -16,16 +16,16 @@ void apply_engine_config(const Config& c, World& w) {
   w.law.restitution = c.get_float("contact.restitution");
   w.law.tangential_damping_ratio = c.get_float("contact.tangential_damping_ratio");
   w.neighbors.skin = c.get_float("neighbor.skin");
-  w.sort_every = static_cast<int>(c.get_int("neighbor.sort_every"));
+  w.sort_every = c.get_int32("neighbor.sort_every");
   // The limit for the smallest disc the configuration can make (the world may be empty yet).
   const double d_min = c.get_float("particles.d_min");
   const double limit = stable_time_step(w.law.kn, 0.5 * std::numbers::pi * 0.25 * d_min * d_min);
   const double dt = c.get_float("time.dt");
   if (dt > limit)
-    throw config_error(c.source_of("time.dt"), "time.dt", fmt::format("{}", dt),
+    throw config_error(c.sources_of({"time.dt", "contact.kn", "particles.d_min"}), "time.dt", fmt::format("{}", dt),
                        fmt::format("must not exceed the stability limit 0.1 * 2 pi sqrt(m_min_eff / k_n) = {:.6g} "
-                                   "for contact.kn = {} and discs of diameter particles.d_min (or use 0 to compute it)",
-                                   limit, w.law.kn));
+                                   "computed from {} (or use 0 to compute it)",
+                                   limit, c.describe({"contact.kn", "particles.d_min"})));
   w.dt = dt > 0 ? dt : c.get_float("time.dt_fraction") * limit;
 }
 

@@ -14,6 +14,9 @@ struct SettleSpec {
   double relax_time = 20;        // undamped time at the end
   double mu = 0.0;               // contact friction while falling and settling
   double column_width_factor = 2.3;
+  // Thread tuning of the settling loop (run.adapt_threads, run.adapt_slice).
+  bool adapt_threads = true;
+  double adapt_slice = 2.0;
 };
 
 class PackingExperiment final : public Experiment {

@@ -1,6 +1,7 @@
 // The registry of experiments: run.experiment names one; adding an experiment adds a line here.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -18,7 +19,20 @@ namespace orogen {
 namespace {
 
 std::unique_ptr<Experiment> make_packing(const Config& c) {
+  check_material_size(c, c.get_float("layer.length"), c.get_float("layer.thickness"),
+                      {"layer.length", "layer.thickness"});
   return std::make_unique<PackingExperiment>(packing_spec(c), settle_spec(c));
+}
+
+// The material a wedge run holds at its end: the retro-side layer, the pro-side stretch, the
+// convergence fed in (S h0) and the kinematic slab's tiles (two tile lengths at most).
+void check_wedge_size(const Config& c, const WedgeSpec& w) {
+  const double length =
+      (w.retro_length + std::max(w.window, w.initial_active) + w.s_end + 2 * w.tile_length) * w.h0 +
+      2 * WedgeExperiment::tile_margin_for(w.h0);
+  check_material_size(c, length, w.h0,
+                      {"layer.thickness", "wedge.retro_length", "wedge.window", "wedge.initial_active",
+                       "wedge.s_end", "wedge.tile_length"});
 }
 
 std::unique_ptr<Experiment> make_wedge(const Config& c) {
@@ -30,18 +44,19 @@ std::unique_ptr<Experiment> make_wedge(const Config& c) {
   w.mu_br = c.get_float("wedge.mu_br");
   w.gamma_b = c.get_float("wedge.gamma_b");
   w.s_end = c.get_float("wedge.s_end");
-  w.outputs = static_cast<int>(c.get_int("wedge.outputs"));
+  w.outputs = c.get_int32("wedge.outputs");
   w.window = c.get_float("wedge.window");
   w.retro_length = c.get_float("wedge.retro_length");
   w.initial_active = c.get_float("wedge.initial_active");
   w.tile_length = c.get_float("wedge.tile_length");
   w.erosion_height = c.get_float("wedge.erosion_height");
-  w.erosion_every = static_cast<int>(c.get_int("wedge.erosion_every"));
+  w.erosion_every = c.get_int32("wedge.erosion_every");
   w.marker_height = c.get_float("wedge.marker_height");
   w.column_width_factor = c.get_float("layer.column_width_factor");
   w.packing_file = c.get_string("wedge.packing_file");
   w.packing = packing_spec(c);
   w.settle = settle_spec(c);
+  check_wedge_size(c, w);
   if (!w.packing_file.empty()) {
     // Read it now, so that a wrong file is a configuration error before anything is written.
     const double needed = w.h0 + 2 * WedgeExperiment::tile_margin_for(w.h0);

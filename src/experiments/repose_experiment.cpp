@@ -188,6 +188,30 @@ std::array<double, 4> ReposeExperiment::view_box(const World&) const {
   return {-1.0, spec_.size + 0.25 * spec_.size, -1.0, spec_.size + 2.0};
 }
 
+namespace {
+
+// The angle is fitted to the surface columns between the base (the fixed layer or the lip, plus
+// a disc) and 1.5 discs below the top; with less than kMinSlopeHeight between them too few
+// columns remain and the angle would be NaN.
+constexpr double kMinSlopeHeight = 3.0;
+
+void check_slope_height(const Config& c, const ReposeSpec& s) {
+  const double d = s.packing.d_max;
+  const bool slump = s.variant == ReposeVariant::Slump;
+  const double base = slump ? s.fixed_height : s.ledge_fraction * s.size;
+  const double height = s.size - 1.5 * d - (base + d);
+  if (height >= kMinSlopeHeight) return;
+  const std::vector<std::string_view> keys = {"repose.size", slump ? "repose.fixed_height" : "repose.ledge_fraction",
+                                              "particles.d_max", "repose.variant"};
+  throw config_error(c.sources_of(keys), "repose.size", format_value(ConfigValue{s.size}),
+                     fmt::format("leaves {:.3g} d of slope between the {} and the top, where the angle needs at "
+                                 "least {} d (a larger repose.size, or a lower {}); from {}",
+                                 height, slump ? "fixed layer" : "lip of the wall", kMinSlopeHeight,
+                                 slump ? "repose.fixed_height" : "repose.ledge_fraction", c.describe(keys)));
+}
+
+}  // namespace
+
 std::unique_ptr<Experiment> make_repose_experiment(const Config& c) {
   ReposeSpec s;
   s.variant = c.get_string("repose.variant") == "ledge" ? ReposeVariant::Ledge : ReposeVariant::Slump;
@@ -201,8 +225,11 @@ std::unique_ptr<Experiment> make_repose_experiment(const Config& c) {
   s.packing = packing_spec(c);
   s.settle = settle_spec(c);
   if (s.max_time <= s.min_time)
-    throw config_error(c.source_of("repose.max_time"), "repose.max_time", fmt::format("{}", s.max_time),
-                       fmt::format("a time after repose.min_time = {}", s.min_time));
+    throw config_error(c.sources_of({"repose.max_time", "repose.min_time"}), "repose.max_time",
+                       fmt::format("{}", s.max_time),
+                       fmt::format("a time after repose.min_time ({})", c.describe({"repose.min_time"})));
+  check_material_size(c, s.size, s.size, {"repose.size"});
+  check_slope_height(c, s);
   return std::make_unique<ReposeExperiment>(std::move(s));
 }
 

@@ -1,12 +1,19 @@
 #include "experiments/settled_layer.hpp"
 
+#include "run/thread_tuner.hpp"
+
 namespace orogen {
+
+void settle_with_tuning(World& w, PackingExperiment& stage, const SettleSpec& settle) {
+  step_with_tuning(
+      settle.adapt_threads, settle.adapt_slice, [&] { return stage.advance(w); },
+      [&] { return static_cast<double>(w.discs.size()); });
+}
 
 void settle_layer(World& w, const PackingSpec& packing, const SettleSpec& settle) {
   PackingExperiment stage(packing, settle);
   stage.setup(w);
-  while (stage.advance(w)) {
-  }
+  settle_with_tuning(w, stage, settle);
   w.time = 0;
   w.step = 0;
 }

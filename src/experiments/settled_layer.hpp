@@ -6,6 +6,10 @@
 
 namespace orogen {
 
+// Steps a packing stage that is set up until it is done, with the run's thread tuning (the
+// faster of one thread and all of them; results do not depend on it).
+void settle_with_tuning(World& world, PackingExperiment& stage, const SettleSpec& settle);
+
 void settle_layer(World& world, const PackingSpec& packing, const SettleSpec& settle);
 
 }  // namespace orogen

@@ -193,16 +193,18 @@ std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& c) {
   s.speed = c.get_float("singly.speed");
   s.mu_b = c.get_float("singly.mu_b");
   s.shortening = c.get_float("singly.shortening");
-  s.outputs = static_cast<int>(c.get_int("singly.outputs"));
+  s.outputs = c.get_int32("singly.outputs");
   s.steady_from = c.get_float("singly.steady_from");
   s.column_width_factor = c.get_float("layer.column_width_factor");
   s.packing = packing_spec(c);
   s.settle = settle_spec(c);
+  check_material_size(c, s.length, s.h0, {"layer.length", "layer.thickness"});
   if (s.shortening * s.h0 > 0.8 * s.length)
-    throw config_error(c.source_of("singly.shortening"), "singly.shortening", fmt::format("{}", s.shortening),
+    throw config_error(c.sources_of({"singly.shortening", "layer.length", "layer.thickness"}), "singly.shortening",
+                       fmt::format("{}", s.shortening),
                        fmt::format("at most 0.8 layer.length / layer.thickness = {:.3g}: the backstop must stay "
-                                   "well clear of the far wall",
-                                   0.8 * s.length / s.h0));
+                                   "well clear of the far wall (from {})",
+                                   0.8 * s.length / s.h0, c.describe({"layer.length", "layer.thickness"})));
   check_imposed_speed(c, "singly.speed");
   return std::make_unique<SinglyVergentExperiment>(std::move(s));
 }

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <numbers>
+#include <string_view>
+#include <vector>
 
 #include "config/config.hpp"
 #include "world/world.hpp"
@@ -19,9 +21,35 @@ PackingSpec packing_spec(const Config& c) {
   p.seed = static_cast<std::uint64_t>(c.get_int("run.seed"));
   p.mu_wall = c.get_float("contact.mu_wall");
   if (p.d_min > p.d_max)
-    throw config_error(c.source_of("particles.d_min"), "particles.d_min", fmt::format("{}", p.d_min),
-                       fmt::format("must not exceed particles.d_max = {}", p.d_max));
+    throw config_error(c.sources_of({"particles.d_min", "particles.d_max"}), "particles.d_min",
+                       fmt::format("{}", p.d_min),
+                       fmt::format("must not exceed particles.d_max = {} ({})", p.d_max, c.source_of("particles.d_max")));
   return p;
+}
+
+void check_material_size(const Config& c, double length, double thickness,
+                         const std::vector<std::string_view>& size_keys) {
+  std::vector<std::string_view> keys = size_keys;
+  keys.insert(keys.end(), {"particles.d_min", "particles.d_max"});
+  const double d_min = c.get_float("particles.d_min"), d_max = c.get_float("particles.d_max");
+  // Placed material is about 6% above the target and packs at most ~0.9 solid; discs of the mean
+  // diameter. Written so that an overflow (inf) or NaN fails the test too.
+  const double d_mean = 0.5 * (d_min + d_max);
+  const double discs = length * thickness * 1.06 / (0.9 * 0.25 * std::numbers::pi * d_mean * d_mean);
+  if (!(discs <= kMaxParticles))
+    throw config_error(c.sources_of(keys), "", "",
+                       fmt::format("the run would hold about {:.3g} discs ({:.4g} d x {:.4g} d of material), more "
+                                   "than the limit of {:g} million; make the layer smaller or the discs larger. From {}",
+                                   discs, length, thickness, kMaxParticles / 1e6, c.describe(keys)));
+  // Surface columns are column_width_factor mean radii wide (a mean radius is at least d_min / 2).
+  keys.push_back("layer.column_width_factor");
+  const double columns = length / (c.get_float("layer.column_width_factor") * 0.5 * d_min);
+  if (!(columns <= kMaxParticles))
+    throw config_error(c.sources_of(keys), "layer.column_width_factor",
+                       format_value(ConfigValue{c.get_float("layer.column_width_factor")}),
+                       fmt::format("the surface would need about {:.3g} columns over {:.4g} d, more than the limit of "
+                                   "{:g} million; use wider columns or a shorter layer. From {}",
+                                   columns, length, kMaxParticles / 1e6, c.describe(keys)));
 }
 
 SettleSpec settle_spec(const Config& c) {
@@ -32,6 +60,8 @@ SettleSpec settle_spec(const Config& c) {
   s.relax_time = c.get_float("settle.relax_time");
   s.mu = c.get_float("settle.mu");
   s.column_width_factor = c.get_float("layer.column_width_factor");
+  s.adapt_threads = c.get_bool("run.adapt_threads");
+  s.adapt_slice = c.get_float("run.adapt_slice");
   return s;
 }
 
@@ -44,12 +74,15 @@ void check_imposed_speed(const Config& c, const std::string& key) {
   const double dt = c.get_float("time.dt") > 0 ? c.get_float("time.dt") : c.get_float("time.dt_fraction") * limit;
   const double overlap = m_min / kn;
   if (dt > limit) return;  // apply_engine_config refuses the time step itself
-  if (v * dt >= overlap)
-    throw config_error(c.source_of(key), key, fmt::format("{}", v),
+  if (v * dt >= overlap) {
+    const std::vector<std::string_view> keys = {key, "contact.kn", "particles.d_min", "time.dt", "time.dt_fraction"};
+    throw config_error(c.sources_of(keys), key, fmt::format("{}", v),
                        fmt::format("the boundary would move {:.3g} d per step, more than the gravitational contact "
                                    "overlap m g / k_n = {:.3g} d of the smallest disc (thesis eq. 4.3); "
-                                   "use {} < {:.4g}, or a smaller time.dt",
-                                   v * dt, overlap, key, overlap / dt));
+                                   "use {} < {:.4g}, or a smaller time step (time.dt, time.dt_fraction) or a "
+                                   "stiffer contact.kn; the bound comes from {}",
+                                   v * dt, overlap, key, overlap / dt, c.describe(keys)));
+  }
 }
 
 }  // namespace orogen

@@ -2,6 +2,8 @@
 // The [particles], [layer] and [settle] sections read into the specs every experiment that
 // builds a settled packing uses (cross-key checks throw ConfigError).
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "experiments/packing_experiment.hpp"
 
@@ -11,6 +13,12 @@ class Config;
 
 PackingSpec packing_spec(const Config& config);
 SettleSpec settle_spec(const Config& config);
+
+// Refuses (ConfigError) material of length x thickness [d] whose estimated disc count, or whose
+// number of surface columns, is above kMaxParticles (or not finite), before anything is
+// allocated; the message names size_keys (the keys the size comes from) and the disc sizes.
+void check_material_size(const Config& config, double length, double thickness,
+                         const std::vector<std::string_view>& size_keys);
 
 // Thesis eq. 4.3: a boundary that pushes the material (a plate, a backstop) must move less per
 // step than the gravitational contact overlap m g / k_n of the smallest disc; the speed is the

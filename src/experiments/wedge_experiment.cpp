@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "analysis/wedge_geometry.hpp"
+#include "experiments/settled_layer.hpp"
 
 namespace orogen {
 namespace {
@@ -45,8 +46,7 @@ void WedgeExperiment::setup(World& w) {
     p.thickness = spec_.h0;
     PackingExperiment packing(p, spec_.settle);
     packing.setup(box);
-    while (packing.advance(box)) {
-    }
+    settle_with_tuning(box, packing, spec_.settle);
     tile_ = cut_tile(tile_from_world(box, p.length, p.thickness), tile_margin(), spec_.tile_length * spec_.h0);
   }
   build_layer(w);

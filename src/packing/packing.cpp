@@ -109,6 +109,10 @@ void place_random_clusters(World& w, const PackingSpec& s, Random& rng) {
 
 void place_packing(World& w, const PackingSpec& s) {
   if (!(s.d_min > 0 && s.d_min <= s.d_max)) throw std::invalid_argument("need 0 < d_min <= d_max");
+  // The grids below need one cell across the box (2.3 d_max for clusters) and a finite count;
+  // the configuration checks this with key names first (layer.length >= 3, the particle limit).
+  if (!(s.length >= 2.3 * s.d_max && s.thickness > 0 && s.length * s.thickness <= 1e12))
+    throw std::invalid_argument("a packing needs length >= 2.3 d_max and a finite, positive area");
   add_box(w, s);
   Random rng(s.seed);
   switch (s.kind) {

@@ -1,6 +1,9 @@
 #include "run/thread_tuner.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
 
 namespace orogen {
 
@@ -46,6 +49,33 @@ int ThreadTuner::after_step(double work, double now) {
 double ThreadTuner::share(int threads) const {
   const double steps = one_.steps + all_.steps;
   return steps > 0 ? stats(threads).steps / steps : 0.0;
+}
+
+namespace {
+// Puts the team size asked for back when it goes out of scope.
+class TeamSizeGuard {
+ public:
+  TeamSizeGuard() : threads_(omp_get_max_threads()) {}
+  ~TeamSizeGuard() { omp_set_num_threads(threads_); }
+  TeamSizeGuard(const TeamSizeGuard&) = delete;
+  TeamSizeGuard& operator=(const TeamSizeGuard&) = delete;
+  int threads() const { return threads_; }
+
+ private:
+  int threads_;
+};
+}  // namespace
+
+void step_with_tuning(bool adapt, double slice, const std::function<bool()>& step,
+                      const std::function<double()>& work) {
+  const TeamSizeGuard guard;
+  ThreadTuner tuner(adapt ? guard.threads() : 1, slice);
+  const auto t0 = std::chrono::steady_clock::now();
+  while (step()) {
+    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const int threads = tuner.threads();
+    if (tuner.after_step(work(), now) != threads) omp_set_num_threads(tuner.threads());
+  }
 }
 
 std::string ThreadTuner::summary() const {

@@ -3,6 +3,7 @@
 // second core is at times not a core of its own (two threads then run slower than one, with
 // nothing else running here), and the phases come and go during a long run. Results do not
 // depend on the thread count (every loop sums in a fixed order), so switching is free.
+#include <functional>
 #include <string>
 
 namespace orogen {
@@ -50,5 +51,13 @@ class ThreadTuner {
   double slice_start_ = -1, slice_work_ = 0, slice_steps_ = 0;
   Count one_, all_;
 };
+
+// Calls `step` until it returns false, switching the OpenMP team size as a ThreadTuner of the
+// current size decides (none when `adapt` is false), as the run's main loop does; `work` gives
+// a step's particle-steps. For the settling loops of an experiment's set-up, which would
+// otherwise spin a whole team on a busy machine. The team size asked for before is restored
+// afterwards (also on an exception), so that the main loop tunes from the same start.
+void step_with_tuning(bool adapt, double slice, const std::function<bool()>& step,
+                      const std::function<double()>& work);
 
 }  // namespace orogen

@@ -9,9 +9,11 @@
 
 namespace orogen {
 constexpr std::ptrdiff_t kMinParallelItems = 2048;
+// The largest OROGEN_MIN_PARALLEL_ITEMS accepted (more than any run's discs: all on one thread).
+constexpr std::ptrdiff_t kMaxParallelItems = 1000000000;
 
 // kMinParallelItems, or the environment variable OROGEN_MIN_PARALLEL_ITEMS (a whole number
-// >= 1) when set: the tests lower it to take the parallel paths on small runs.
+// from 1 to kMaxParallelItems) when set: the tests lower it to take the parallel paths on small runs.
 std::ptrdiff_t min_parallel_items();
 
 // What is wrong with OROGEN_MIN_PARALLEL_ITEMS (naming the value and what is allowed), or ""
