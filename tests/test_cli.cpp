@@ -389,8 +389,8 @@ TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
       {"--out " + d + "a_file'", {"a_file", "cannot create the run folder"}},
       {"--out " + d + "done'", {"already holds a run", "--resume"}},
       {"--resume " + d + "new'", {"no such folder"}},
-      {"--resume " + d + "done' --set contact.mu=0.2", {"drop CONFIG and --set"}},
-      {"--resume " + d + "done' " + d + "type.toml'", {"drop CONFIG and --set"}},
+      {"--resume " + d + "done' --set contact.mu=0.2", {"--set contact.mu=0.2 would change what the run computes"}},
+      {"--resume " + d + "done' " + d + "type.toml'", {"drop CONFIG"}},
       {"--resume " + d + "done'", {"already finished"}, false},
   };
   for (const auto& c : cases) {

@@ -366,7 +366,7 @@ int run_command(const RunOptions& opt) {
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
     auto experiment = make_experiment(config);
-    const int threads = opt.threads >= 0 ? opt.threads : static_cast<int>(config.get_int("run.threads"));
+    const int threads = opt.threads >= 0 ? opt.threads : config.get_int32("run.threads");
     if (threads > 0) omp_set_num_threads(threads);
 
     RunFolderLock lock(opt.out);
