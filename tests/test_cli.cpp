@@ -744,3 +744,13 @@ TEST_F(Cli, AFinishedWedgeExtendedWithResumeEqualsOneRunToTheNewEnd) {
   expect_same_run(whole, extended);
   expect_same_bytes(whole / "config.toml", extended / "config.toml");
 }
+
+TEST_F(Cli, AnUnknownCommandIsNamedAndTheHelpIsClean) {
+  const auto r = orogen_cli("frobnicate --out x", dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("unknown command 'frobnicate'; the commands are run, render"), std::string::npos) << r.err;
+  const auto help = orogen_cli("render --help", dir_);
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--no-animation"), std::string::npos) << help.out;
+  EXPECT_EQ(help.out.find("{false}"), std::string::npos) << help.out;
+}

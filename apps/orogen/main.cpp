@@ -55,7 +55,8 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(not_empty)
       ->check(CLI::Range(1, 240));
-  render_cmd->add_flag("!--no-animation", render.animation, "only the PNG frames");
+  bool no_animation = false;  // a plain flag: CLI11 prints "{false}" after a negated one in --help
+  render_cmd->add_flag("--no-animation", no_animation, "only the PNG frames");
   render_cmd->add_flag("--vectors", render.vectors,
                        "draw each disc's displacement over the last three outputs as an arrow");
   render_cmd->add_option("--vector-scale", render.vector_scale, "arrow length per unit displacement")
@@ -83,6 +84,15 @@ int main(int argc, char** argv) {
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
   config_cmd->add_flag("--markdown", markdown, "print the key reference as Markdown tables instead");
 
+  // CLI11 reads an unknown first word as a stray argument ("A subcommand is required"): name it.
+  if (argc > 1 && argv[1][0] != '-' && app.get_subcommands([&](CLI::App* c) { return c->get_name() == argv[1]; }).empty()) {
+    std::string known;
+    for (const CLI::App* c : app.get_subcommands([](CLI::App*) { return true; }))
+      known += (known.empty() ? "" : ", ") + c->get_name();
+    std::cerr << "error: unknown command '" << argv[1] << "'; the commands are " << known
+              << " (orogen --help)\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -112,5 +122,6 @@ int main(int argc, char** argv) {
     return orogen::sweep_command(sweep);
   }
   render.dir = render_dir;
+  render.animation = !no_animation;
   return orogen::render_command(render);
 }
