@@ -23,8 +23,8 @@ std::string quoted_field(const std::string& desc, const std::string& key) {
 // a user can act on: the system's message and the file.
 std::string shorter_reason(const std::string& desc) {
   const std::string message = quoted_field(desc, "error message"), file = quoted_field(desc, "filename");
-  if (message.empty() || file.empty()) return desc;
-  return message + ", file '" + file + "'";
+  if (message.empty()) return desc;
+  return file.empty() ? message : message + ", file '" + file + "'";
 }
 
 // The innermost description on HDF5's error stack: the most specific reason it has.
