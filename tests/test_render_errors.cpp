@@ -1,6 +1,7 @@
 // `orogen render` refuses what it cannot draw with one message and a documented exit code
 // (2 bad argument or input file, 1 I/O), never an uncaught exception or a signal: options out
 // of range, folders that hold no run, damaged or foreign snapshot files, unwritable folders.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -30,8 +31,8 @@ struct Result {
 // Runs `orogen ARGS` through the shell (ARGS is shell syntax), output captured under `scratch`.
 Result orogen_cli(const std::string& args, const fs::path& scratch) {
   const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  const std::string cmd = "'" + std::string(OROGEN_BINARY) + "' " + args + " >'" + out.string() + "' 2>'" +
-                          err.string() + "'";
+  // fmt, not operator+: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
+  const std::string cmd = fmt::format("'{}' {} >'{}' 2>'{}'", OROGEN_BINARY, args, out.string(), err.string());
   const int raw = std::system(cmd.c_str());
   Result r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : WIFSIGNALED(raw) ? 128 + WTERMSIG(raw) : -1;
@@ -44,7 +45,7 @@ Result orogen_cli(const std::string& args, const fs::path& scratch) {
 
 void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+std::string quoted(const fs::path& p) { return fmt::format("'{}'", p.string()); }
 
 // Whether stderr is a clean refusal: an "error:" line, no crash report.
 void expect_refusal(const Result& r, int status, const std::string& names, const std::string& what) {
@@ -159,11 +160,11 @@ TEST_F(RenderErrors, EmptyTextAndTruncatedSnapshotFilesAreRefusedWith2) {
 TEST_F(RenderErrors, ByteFlippedSnapshotFilesNeverCrash) {
   const std::string good = slurp(shared_ / "run" / "snapshots.h5");
   // Flips spread over the superblock, the object headers and the data.
-  for (std::size_t at = 0; at < good.size(); at += 1 + good.size() / 40) {
+  for (std::size_t at = 0; at < good.size(); at += 1 + good.size() / 12) {
     std::string bad = good;
     for (std::size_t i = at; i < std::min(bad.size(), at + 8); ++i) bad[i] = static_cast<char>(~bad[i]);
     const fs::path run = run_with_snapshots(bad);
-    const Result r = render(quoted(run) + " --no-animation --width 300");
+    const Result r = render(quoted(run) + " --no-animation --width 200 --every 3");
     const std::string what = "bytes " + std::to_string(at) + "..+8 flipped";
     // A flip inside the numbers may still draw (wrong) pictures; anything else is a refusal.
     if (r.status != 0) expect_refusal(r, 2, (run / "snapshots.h5").string(), what);
