@@ -206,10 +206,13 @@ TEST_F(RenderErrors, ForeignHdf5FilesAreRefusedWith2) {
   expect_refusal(render(quoted(none)), 2, "no output steps", "no outputs");
 }
 
-TEST_F(RenderErrors, UnwritableFramesFolderIsAnIoErrorWith1) {
+TEST_F(RenderErrors, UnwritableFramesFolderIsRefused) {
   const fs::path run = run_copy();
+  // A name taken by a file is a bad --frames-dir (2); a folder that cannot be written is I/O (1).
   spit(run / "frames", "a file in the way");
-  expect_refusal(render(quoted(run) + " --no-animation"), 1, (run / "frames").string(), "frames is a file");
+  expect_refusal(render(quoted(run) + " --no-animation"), 2, "--frames-dir frames", "frames is a file");
+  expect_refusal(render(quoted(run) + " --no-animation --frames-dir snapshots.h5"), 2, "--frames-dir snapshots.h5",
+                 "frames-dir names the snapshot file");
 
   fs::create_directories(run / "pictures" / "frame_000000.png.tmp");  // cairo cannot write the picture
   expect_refusal(render(quoted(run) + " --no-animation --frames-dir pictures"), 1, (run / "pictures").string(),

@@ -171,8 +171,11 @@ auto reading(const fs::path& h5, F&& f) {
 }
 
 // The frames folder inside the run folder (an I/O failure is exit 1).
-fs::path make_frames_folder(const fs::path& frames) {
+fs::path make_frames_folder(const fs::path& frames, const std::string& name) {
   std::error_code ec;
+  if (fs::exists(fs::symlink_status(frames, ec)) && !fs::is_directory(fs::status(frames, ec)))
+    throw RenderError(2, fmt::format("--frames-dir {}: {} exists and is not a folder; choose another name", name,
+                                     frames.string()));
   fs::create_directories(frames, ec);
   if (ec || !fs::is_directory(frames))
     throw RenderError(1, fmt::format("cannot create the frames folder {}: {}", frames.string(),
@@ -234,7 +237,7 @@ int render_checked(const RenderCommandOptions& o) {
     return 0;
   });
   check_layout(view, ro, h5);
-  const fs::path frames = make_frames_folder(o.dir / o.frames_name);
+  const fs::path frames = make_frames_folder(o.dir / o.frames_name, o.frames_name);
   int n = 0;
   for (std::int64_t k = 0; k < count; k += o.every) {
     Frame f = reading(h5, [&] { return frame_from_snapshot(reader->read(k), h0, field, o.vectors); });
