@@ -25,6 +25,7 @@ import concurrent.futures
 import os
 import random
 import re
+import resource
 import shlex
 import shutil
 import signal
@@ -233,7 +234,7 @@ def set_case(rng, case, default_keys):
 
 def file_case(rng, case):
     """Config files that are not TOML text: missing, a folder, empty, binary, /dev/zero-like."""
-    form = rng.choice(["missing", "folder", "empty", "binary", "devnull", "huge_line", "bom"])
+    form = rng.choice(["missing", "folder", "empty", "binary", "devnull", "devzero", "huge_line", "bom"])
     path = "case.toml"
     if form == "missing":
         path = "nosuch.toml"
@@ -246,6 +247,8 @@ def file_case(rng, case):
         case.files[path] = bytes(rng.randrange(256) for _ in range(rng.choice([1, 100, 5000])))
     elif form == "devnull":
         path = "/dev/null"
+    elif form == "devzero":
+        path = "/dev/zero"  # endless: must be refused, not read until memory runs out
     elif form == "huge_line":
         case.files[path] = b"[run]\nexperiment = \"" + b"w" * 1000000 + b"\"\n"
     else:
@@ -423,6 +426,8 @@ def names_something(err, case, case_dir):
     """Whether an exit-2 message names a key, a file path or a command-line argument."""
     if NAMES_KEY.search(err) or "/" in err:
         return True
+    if re.search(r"^(--?[\w-]+|\w+) is required", err, re.M):
+        return True  # CLI11 naming a missing option or positional argument ("file is required")
     for path in list(case.files) + [case_dir]:
         if path.split("/")[0] and path.split("/")[0] in err:
             return True
@@ -447,7 +452,13 @@ def read_capped(path):
     return data.decode("utf-8", "replace")
 
 
-def run_case(case, binary, root, timeout):
+def sanitized(binary):
+    """Whether the binary was built with AddressSanitizer (which needs terabytes of address space)."""
+    with open(binary, "rb") as f:
+        return b"AddressSanitizer" in f.read()
+
+
+def run_case(case, binary, root, timeout, memory_mb):
     """Runs one case; returns (case, failure text or None, timed out)."""
     case_dir = os.path.join(root, "case_%06d" % case.index)
     os.makedirs(case_dir)
@@ -465,6 +476,14 @@ def run_case(case, binary, root, timeout):
         # A session of its own, so a timeout kills the whole group (a sweep's runs, ffmpeg).
         proc = subprocess.Popen([binary] + case.argv, cwd=case_dir, stdin=subprocess.DEVNULL, stdout=out, stderr=err,
                                 env=env, start_new_session=True)
+        if memory_mb:
+            # An input that makes orogen allocate without end (/dev/zero as config) must fail inside
+            # it, visibly, not take the machine's memory during the timeout.
+            limit = memory_mb << 20
+            try:
+                resource.prlimit(proc.pid, resource.RLIMIT_AS, (limit, limit))
+            except (ProcessLookupError, PermissionError):
+                pass
         try:
             status = proc.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -559,6 +578,8 @@ def main():
     parser.add_argument("--timeout", type=float, default=10.0, help="seconds per case before the harness kills it")
     parser.add_argument("--jobs", type=int, default=2, help="cases at once")
     parser.add_argument("--keep-failures", metavar="DIR", help="copy failing cases' inputs and command lines here")
+    parser.add_argument("--memory-mb", type=int, default=4096, help="memory limit of each case in MiB (0: "
+                        "none): its address space, or for a sanitizer build ASan's hard_rss_limit_mb")
     parser.add_argument("--verbose", action="store_true", help="also list the cases killed at the timeout")
     parser.add_argument("--first", type=int, default=0, help="index of the first case (to rerun one: --first I --count 1)")
     args = parser.parse_args()
@@ -581,7 +602,13 @@ def main():
         failed = passed = timeouts = 0
         endings = {}  # kind -> exit status -> cases: shows whether the mutations get past the checks
         with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-            futures = [pool.submit(run_case, c, binary, root, args.timeout) for c in cases]
+            memory_mb = args.memory_mb
+            if sanitized(binary) and memory_mb:
+                # ASan cannot run under an address-space limit; its own RSS limit reports instead.
+                os.environ["ASAN_OPTIONS"] = (os.environ.get("ASAN_OPTIONS", "") +
+                                              ":hard_rss_limit_mb=%d" % memory_mb).lstrip(":")
+                memory_mb = 0
+            futures = [pool.submit(run_case, c, binary, root, args.timeout, memory_mb) for c in cases]
             for future in futures:  # in case order: the report does not depend on --jobs
                 case, failure, timed_out, stderr, status = future.result()
                 key = "timeout" if timed_out else str(status)
