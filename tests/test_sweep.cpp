@@ -16,7 +16,9 @@
 #include <vector>
 
 #include "config/config.hpp"
+#include "run/sweep_log_tail.hpp"
 #include "run/sweep_plan.hpp"
+#include "run/sweep_run_state.hpp"
 #include "temp_dir_fixture.hpp"
 
 namespace fs = std::filesystem;
@@ -56,7 +58,7 @@ class Sweep : public orogen::testing::TempDirTest {
     return r;
   }
 
-  // results.csv as header names and rows of cells (no quoting in these tests).
+  // results.csv as header names and rows of cells (RFC 4180 quotes; no line breaks in a cell).
   struct Csv {
     std::vector<std::string> header;
     std::vector<std::map<std::string, std::string>> rows;
@@ -65,10 +67,15 @@ class Sweep : public orogen::testing::TempDirTest {
     Csv csv;
     std::istringstream in(slurp(p));
     auto split = [](const std::string& line) {
-      std::vector<std::string> cells;
-      std::stringstream ss(line);
-      for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-      if (!line.empty() && line.back() == ',') cells.emplace_back();
+      std::vector<std::string> cells(1);
+      bool quoted = false;
+      for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (c == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"') cells.back() += line[i++];
+        else if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) cells.emplace_back();
+        else cells.back() += c;
+      }
       return cells;
     };
     for (std::string line; std::getline(in, line);) {
@@ -194,13 +201,83 @@ TEST_F(Sweep, FailedRunIsRecordedAndNotRepeated) {
   EXPECT_FALSE(csv.rows[0].at("n_discs").empty());
   EXPECT_EQ(csv.rows[1].at("exit_status"), "3");
   EXPECT_TRUE(csv.rows[1].at("n_discs").empty());
+  // The reason is in the table and in the marker: the run's last log line.
+  EXPECT_TRUE(csv.rows[0].at("error").empty());
+  EXPECT_NE(csv.rows[1].at("error").find("unstable"), std::string::npos) << csv.rows[1].at("error");
+  EXPECT_NE(slurp(dir_ / "out/runs/001_kn=3/sweep.failed").find("unstable"), std::string::npos);
+  EXPECT_NE(slurp(dir_ / "out/results.md").find("unstable"), std::string::npos);
 
   const auto again = orogen("sweep s.toml --out out --jobs 2");
   EXPECT_EQ(again.status, 1) << again.err;
-  EXPECT_NE(again.err.find("001_kn=3: failed before (exit 3: unstable)"), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("001_kn=3: failed before (exit 3: unstable: stopped"), std::string::npos) << again.err;
   EXPECT_EQ(again.err.find("started"), std::string::npos) << again.err;
+  EXPECT_EQ(again.err.find("continuing"), std::string::npos) << again.err;
   csv = read_csv(dir_ / "out/results.csv");
   EXPECT_EQ(csv.rows[1].at("exit_status"), "3");
+  EXPECT_NE(csv.rows[1].at("error").find("unstable"), std::string::npos) << csv.rows[1].at("error");
+
+  // Removing the member's folder is how to try it again.
+  fs::remove_all(dir_ / "out/runs/001_kn=3");
+  const auto retry = orogen("sweep s.toml --out out --jobs 2");
+  EXPECT_EQ(retry.status, 1) << retry.err;
+  EXPECT_NE(retry.err.find("001_kn=3: started"), std::string::npos) << retry.err;
+}
+
+TEST_F(Sweep, ResultsAreWrittenForMembersWithoutASummary) {
+  spit(dir_ / "s.toml", "[sweep]\nbase = \"base.toml\"\n[matrix]\n\"contact.mu\" = [0.1, 0.2, 0.3]\n");
+  ASSERT_EQ(orogen("sweep s.toml --out out --jobs 2").status, 0);
+  const fs::path runs = dir_ / "out" / "runs";
+  // No summary, a header only, and garbage: each row keeps its name and status, cells empty.
+  fs::remove(runs / "000_mu=0.1" / "summary.csv");
+  fs::remove(runs / "000_mu=0.1" / "series.csv");
+  spit(runs / "001_mu=0.2" / "summary.csv", "# nothing\nn_discs,thickness\n");
+  spit(runs / "002_mu=0.3" / "summary.csv", std::string("\x00\xff,,,\n\"\n", 9));
+  const auto r = orogen("sweep s.toml --out out --jobs 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Csv csv = read_csv(dir_ / "out" / "results.csv");
+  ASSERT_EQ(csv.rows.size(), 3u);
+  for (const auto& row : csv.rows) {
+    EXPECT_EQ(row.at("exit_status"), "0");
+    EXPECT_TRUE(row.count("n_discs") == 0 || row.at("n_discs").empty()) << row.at("name");
+  }
+  EXPECT_NE(slurp(dir_ / "out" / "results.md").find("3 finished, 0 failed"), std::string::npos);
+}
+
+// A marker written for a verdict (exit 2 or 3) skips the member; anything else is retried.
+TEST(SweepRunState, FailedMarkerHoldsAVerdictAndItsReason) {
+  const fs::path dir = fs::temp_directory_path() / ("orogen_sweep_state_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  auto marker = [&](const std::string& text) {
+    std::ofstream(dir / orogen::kFailedMarker, std::ios::binary) << text;
+    return orogen::inspect_run(dir, "");
+  };
+  auto s = marker("3\nstopped: simulation became unstable\n");
+  EXPECT_EQ(s.stage, orogen::RunStage::Failed);
+  EXPECT_EQ(s.failed_status, 3);
+  EXPECT_EQ(s.failed_error, "stopped: simulation became unstable");
+  s = marker("2\n");  // as older sweeps wrote it
+  EXPECT_EQ(s.stage, orogen::RunStage::Failed);
+  EXPECT_EQ(s.failed_status, 2);
+  EXPECT_EQ(s.failed_error, "");
+  for (const char* retried : {"137\n", "134\nterminate called\n", "1\n", "", "garbage"}) {
+    EXPECT_EQ(marker(retried).stage, orogen::RunStage::Restart) << retried;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(SweepLogTail, LastLineOfTheLatestAttempt) {
+  const fs::path log = fs::temp_directory_path() / ("orogen_sweep_log_" + std::to_string(::getpid()) + ".log");
+  std::ofstream(log, std::ios::binary) << "=== 2026-01-01 orogen run a\n[2026-01-01 10:00:00] first reason\n"
+                                          "=== 2026-01-02 orogen run --resume a\n[2026-01-02 10:00:00] step 5\n"
+                                          "[2026-01-02 10:00:01] stopped: unstable\n\n";
+  EXPECT_EQ(orogen::last_log_line(log), "stopped: unstable");
+  std::ofstream(log, std::ios::binary | std::ios::app) << "=== 2026-01-03 orogen run --resume a\n";
+  EXPECT_EQ(orogen::last_log_line(log), "");  // the latest attempt wrote nothing
+  std::ofstream(log, std::ios::binary | std::ios::app) << std::string(100000, 'x') << "\n";
+  EXPECT_EQ(orogen::last_log_line(log).size(), 300u);
+  fs::remove(log);
+  EXPECT_EQ(orogen::last_log_line(log), "");
 }
 
 TEST_F(Sweep, BadSweepFilesExitWith2NamingTheKeyAndWriteNothing) {

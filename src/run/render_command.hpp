@@ -21,7 +21,10 @@ struct RenderCommandOptions {
   int vector_stride = 1;           // draw every n-th disc's arrow
 };
 
-// Exit codes: 0 done, 2 bad input.
+// Exit codes: 0 done; 2 bad input: an option out of range (each is named with what is
+// allowed), a folder that holds no run, a snapshot file that is not a readable orogen one;
+// 1 I/O: the snapshot file or the frames folder cannot be read or written, ffmpeg failed.
+// Every failure is one "error: ..." line on stderr; nothing is thrown.
 int render_command(const RenderCommandOptions& options);
 
 }  // namespace orogen

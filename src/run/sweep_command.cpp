@@ -14,6 +14,7 @@
 #include "config/config.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot_reader.hpp"
+#include "run/sweep_log_tail.hpp"
 #include "run/sweep_plan.hpp"
 #include "run/sweep_processes.hpp"
 #include "run/sweep_report.hpp"
@@ -120,8 +121,10 @@ class Sweep {
         case RunStage::Failed:
           ++failed;
           outcomes_[i].exit_status = s.failed_status;
-          report_.event(fmt::format("{}: failed before ({}); remove {} to try again", run.name,
-                                    status_text(s.failed_status), dir.string()));
+          outcomes_[i].error = s.failed_error.empty() ? last_log_line(log_of(i)) : s.failed_error;
+          report_.event(fmt::format("{}: failed before ({}{}); remove {} to try again", run.name,
+                                    status_text(s.failed_status),
+                                    outcomes_[i].error.empty() ? "" : ": " + outcomes_[i].error, dir.string()));
           continue;
         case RunStage::Resume:
           ++resumed;
@@ -232,11 +235,13 @@ class Sweep {
     if (a.is_run) {
       outcomes_[i].exit_status = status;
       if (status != 0) {
+        outcomes_[i].error = last_log_line(log_of(i));
         report_.event(fmt::format("{}: failed ({}), see {}", name, status_text(status), log_of(i).string()));
         // A verdict on the configuration would come again: recorded, so a restarted sweep does not repeat it.
         if (is_verdict(status)) {
           fs::create_directories(run_dir(i));
-          write_file_atomically(run_dir(i) / kFailedMarker, std::to_string(status) + "\n");
+          write_file_atomically(run_dir(i) / kFailedMarker,
+                                std::to_string(status) + "\n" + outcomes_[i].error + "\n");
         }
         pending_.erase(i);
         write_results();
@@ -245,6 +250,7 @@ class Sweep {
       report_.event(name + ": finished");
     } else if (status != 0) {
       outcomes_[i].render_status = status;
+      outcomes_[i].error = last_log_line(log_of(i));
       report_.event(fmt::format("{}: render failed ({}), see {}", name, status_text(status), log_of(i).string()));
       t.renders.clear();
       pending_.erase(i);

@@ -99,7 +99,13 @@ Table build_table(const fs::path& out_dir, const SweepPlan& plan, const std::vec
       // An unreadable summary leaves its cells empty; the run's own files say more.
     }
   }
-  for (auto& r : t.rows) r.resize(t.columns.size());
+  // Last, so that the long text of a failure does not push the numbers out of sight.
+  const std::size_t error = t.column("error", "a failed run or render: the last line of its log (logs/NAME.log)");
+  t.columns[error].numeric = false;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    t.rows[i].resize(t.columns.size());
+    t.rows[i][error] = text_cell(outcomes[i].error);
+  }
   return t;
 }
 

@@ -79,10 +79,14 @@ RunInspection inspect_run(const fs::path& dir, const std::string& resolved_toml)
   }
   if (fs::exists(dir / kFailedMarker)) {
     try {
-      const int status = std::stoi(slurp(dir / kFailedMarker));
+      const std::string marker = slurp(dir / kFailedMarker);
+      const int status = std::stoi(marker);
       if (is_verdict(status)) {
         r.stage = RunStage::Failed;
         r.failed_status = status;
+        // The second line, where a marker has one (older sweeps wrote the status alone).
+        const auto eol = marker.find('\n');
+        if (eol != std::string::npos) r.failed_error = marker.substr(eol + 1, marker.find('\n', eol + 1) - eol - 1);
         return r;
       }
     } catch (const std::exception&) {

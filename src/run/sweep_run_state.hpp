@@ -19,12 +19,13 @@ enum class RunStage {
 struct RunInspection {
   RunStage stage = RunStage::Absent;
   int failed_status = 0;  // Failed: the recorded exit status
+  std::string failed_error;  // Failed: the run's last log line, as recorded
   bool rendered = false;  // Finished: both renders done
   std::string note;       // why (for the sweep log), e.g. "checkpoint unreadable: ..."
 };
 
 // Marker files the sweep writes into a run folder.
-inline constexpr const char* kFailedMarker = "sweep.failed";      // holds the exit status
+inline constexpr const char* kFailedMarker = "sweep.failed";      // the exit status, then the last log line
 inline constexpr const char* kRenderedMarker = "sweep.rendered";  // empty
 
 // Inspects a run folder. Throws std::runtime_error, naming the folder and the first differing

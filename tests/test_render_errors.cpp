@@ -1,0 +1,229 @@
+// `orogen render` refuses what it cannot draw with one message and a documented exit code
+// (2 bad argument or input file, 1 I/O), never an uncaught exception or a signal: options out
+// of range, folders that hold no run, damaged or foreign snapshot files, unwritable folders.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "io/hdf5_file.hpp"
+#include "io/snapshot_writer.hpp"
+#include "temp_dir_fixture.hpp"
+
+namespace fs = std::filesystem;
+using orogen::testing::slurp;
+
+namespace {
+
+struct Result {
+  int status = -1;  // exit status, or 128 + signal
+  std::string out, err;
+};
+
+// Runs `orogen ARGS` through the shell (ARGS is shell syntax), output captured under `scratch`.
+Result orogen_cli(const std::string& args, const fs::path& scratch) {
+  const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
+  // fmt, not operator+: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
+  const std::string cmd = fmt::format("'{}' {} >'{}' 2>'{}'", OROGEN_BINARY, args, out.string(), err.string());
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : WIFSIGNALED(raw) ? 128 + WTERMSIG(raw) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+std::string quoted(const fs::path& p) { return fmt::format("'{}'", p.string()); }
+
+// Whether stderr is a clean refusal: an "error:" line, no crash report.
+void expect_refusal(const Result& r, int status, const std::string& names, const std::string& what) {
+  EXPECT_EQ(r.status, status) << what << "\n" << r.err;
+  EXPECT_NE(r.err.find("error"), std::string::npos) << what << "\n" << r.err;
+  EXPECT_NE(r.err.find(names), std::string::npos) << what << ": message should name " << names << "\n" << r.err;
+  EXPECT_EQ(r.err.find("terminate called"), std::string::npos) << what << "\n" << r.err;
+}
+
+class RenderErrors : public orogen::testing::TempDirTest {
+ protected:
+  // One tiny finished run (a settled packing of ~40 discs, 3 outputs) shared by the suite.
+  static void SetUpTestSuite() {
+    ::setenv("OMP_WAIT_POLICY", "passive", 0);
+    shared_ = fs::temp_directory_path() / ("orogen_RenderErrors_run_" + std::to_string(::getpid()));
+    fs::remove_all(shared_);
+    fs::create_directories(shared_);
+    const Result r = orogen_cli(
+        "run --set run.experiment=packing --set particles.packing=random_discs --set layer.length=10"
+        " --set layer.thickness=3 --set contact.kn=1000 --set settle.relax_time=1 --set settle.ke_threshold=1e-3"
+        " --set output.interval=2 --set output.vtp=false --set output.progress=never --threads 1 --out " +
+            quoted(shared_ / "run"),
+        shared_);
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  static void TearDownTestSuite() { fs::remove_all(shared_); }
+
+  // A copy of the shared run in this test's folder, free to damage.
+  fs::path run_copy() {
+    const fs::path run = dir_ / "run";
+    fs::copy(shared_ / "run", run, fs::copy_options::recursive);
+    return run;
+  }
+  // A run folder whose snapshots.h5 holds `bytes`.
+  fs::path run_with_snapshots(const std::string& bytes) {
+    const fs::path run = dir_ / "damaged";
+    fs::create_directories(run);
+    spit(run / "snapshots.h5", bytes);
+    return run;
+  }
+  Result render(const std::string& args) { return orogen_cli("render " + args, dir_); }
+
+  static fs::path shared_;
+};
+
+fs::path RenderErrors::shared_;
+
+TEST_F(RenderErrors, ARealRunStillRenders) {
+  const fs::path run = run_copy();
+  const Result r = render(quoted(run) + " --no-animation --width 400");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(run / "frames" / "frame_000000.png"));
+}
+
+TEST_F(RenderErrors, OptionsOutOfRangeAreRefusedWith2NamingTheOption) {
+  const fs::path run = shared_ / "run";  // options are checked before the folder is touched
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--width 0", "--width"},          {"--width -5", "--width"},
+      {"--width 10", "--width"},         {"--width 1000000000", "--width"},
+      {"--fps 0", "--fps"},              {"--fps -1", "--fps"},
+      {"--fps 1000000000", "--fps"},     {"--every 0", "--every"},
+      {"--every -3", "--every"},         {"--vector-stride 0", "--vector-stride"},
+      {"--vector-stride -1", "--vector-stride"}, {"--vector-scale 0", "--vector-scale"},
+      {"--vector-scale -1", "--vector-scale"},   {"--vector-scale 1e300", "--vector-scale"},
+      {"--vector-scale nan", "--vector-scale"},  {"--color bogus", "--color"},
+      {"--color field:", "--color"},     {"--color ''", "--color"},
+      {"--frames-dir ../elsewhere", "--frames-dir"}, {"--frames-dir /tmp/x", "--frames-dir"},
+      {"--frames-dir ''", "--frames-dir"},           {"--frames-dir ..", "--frames-dir"},
+  };
+  for (const auto& [args, names] : cases) {
+    const Result r = render(quoted(run) + " --no-animation " + args);
+    expect_refusal(r, 2, names, args);
+  }
+  EXPECT_FALSE(fs::exists(shared_ / "elsewhere"));
+}
+
+TEST_F(RenderErrors, UnknownFieldIsRefusedNamingItAndTheFieldsThereAre) {
+  const Result r = render(quoted(shared_ / "run") + " --no-animation --color field:NOPE");
+  expect_refusal(r, 2, "field:NOPE", "--color field:NOPE");
+  EXPECT_NE(r.err.find("there are: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("radius"), std::string::npos) << r.err;
+}
+
+TEST_F(RenderErrors, FoldersThatHoldNoRunAreRefusedWith2) {
+  expect_refusal(render(quoted(dir_ / "nope")), 2, (dir_ / "nope").string(), "missing folder");
+  fs::create_directories(dir_ / "empty");
+  expect_refusal(render(quoted(dir_ / "empty")), 2, (dir_ / "empty" / "snapshots.h5").string(), "empty folder");
+  spit(dir_ / "file", "x");
+  expect_refusal(render(quoted(dir_ / "file")), 2, (dir_ / "file").string(), "a file");
+  fs::create_directories(dir_ / "dirh5" / "snapshots.h5");
+  expect_refusal(render(quoted(dir_ / "dirh5")), 2, (dir_ / "dirh5" / "snapshots.h5").string(), "a folder as file");
+  expect_refusal(render("''"), 2, "empty", "empty argument");
+}
+
+TEST_F(RenderErrors, EmptyTextAndTruncatedSnapshotFilesAreRefusedWith2) {
+  const std::string good = slurp(shared_ / "run" / "snapshots.h5");
+  ASSERT_GT(good.size(), 4096u);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "empty"},
+      {"x = 1\n[run]\nexperiment = \"wedge\"\n", "text renamed"},
+      {good.substr(0, 8), "truncated to 8 bytes"},
+      {good.substr(0, 512), "truncated to 512 bytes"},
+      {good.substr(0, good.size() / 2), "truncated to half"},
+      {good.substr(0, good.size() - 16), "16 bytes short"},
+  };
+  for (const auto& [bytes, what] : cases) {
+    const fs::path run = run_with_snapshots(bytes);
+    expect_refusal(render(quoted(run) + " --no-animation"), 2, (run / "snapshots.h5").string(), what);
+  }
+}
+
+TEST_F(RenderErrors, ByteFlippedSnapshotFilesNeverCrash) {
+  const std::string good = slurp(shared_ / "run" / "snapshots.h5");
+  // Flips spread over the superblock, the object headers and the data.
+  for (std::size_t at = 0; at < good.size(); at += 1 + good.size() / 12) {
+    std::string bad = good;
+    for (std::size_t i = at; i < std::min(bad.size(), at + 8); ++i) bad[i] = static_cast<char>(~bad[i]);
+    const fs::path run = run_with_snapshots(bad);
+    const Result r = render(quoted(run) + " --no-animation --width 200 --every 3");
+    const std::string what = "bytes " + std::to_string(at) + "..+8 flipped";
+    // A flip inside the numbers may still draw (wrong) pictures; anything else is a refusal.
+    if (r.status != 0) expect_refusal(r, 2, (run / "snapshots.h5").string(), what);
+    EXPECT_EQ(r.err.find("terminate called"), std::string::npos) << what << "\n" << r.err;
+    fs::remove_all(run);
+  }
+}
+
+TEST_F(RenderErrors, ForeignHdf5FilesAreRefusedWith2) {
+  const fs::path foreign = dir_ / "foreign";
+  fs::create_directories(foreign);
+  {
+    auto f = orogen::h5::File::create(foreign / "snapshots.h5");
+    const std::vector<double> v = {1, 2, 3};
+    orogen::h5::write(f.id(), "temperature", v);
+  }
+  expect_refusal(render(quoted(foreign)), 2, (foreign / "snapshots.h5").string(), "other content");
+
+  // The right format tag, but outputs that are not there.
+  const fs::path hollow = dir_ / "hollow";
+  fs::create_directories(hollow);
+  {
+    auto f = orogen::h5::File::create(hollow / "snapshots.h5");
+    orogen::h5::set_attr_string(f.id(), "format", orogen::kSnapshotFormat);
+    orogen::h5::set_attr_int64(f.id(), "version", orogen::kSnapshotVersion);
+    orogen::h5::set_attr_int64(f.id(), "n_outputs", 5);
+  }
+  expect_refusal(render(quoted(hollow)), 2, (hollow / "snapshots.h5").string(), "outputs missing");
+
+  // No outputs yet.
+  const fs::path none = dir_ / "none";
+  fs::create_directories(none);
+  {
+    auto f = orogen::h5::File::create(none / "snapshots.h5");
+    orogen::h5::set_attr_string(f.id(), "format", orogen::kSnapshotFormat);
+    orogen::h5::set_attr_int64(f.id(), "version", orogen::kSnapshotVersion);
+    orogen::h5::set_attr_int64(f.id(), "n_outputs", 0);
+  }
+  expect_refusal(render(quoted(none)), 2, "no output steps", "no outputs");
+}
+
+TEST_F(RenderErrors, UnwritableFramesFolderIsRefused) {
+  const fs::path run = run_copy();
+  // A name taken by a file is a bad --frames-dir (2); a folder that cannot be written is I/O (1).
+  spit(run / "frames", "a file in the way");
+  expect_refusal(render(quoted(run) + " --no-animation"), 2, "--frames-dir frames", "frames is a file");
+  expect_refusal(render(quoted(run) + " --no-animation --frames-dir snapshots.h5"), 2, "--frames-dir snapshots.h5",
+                 "frames-dir names the snapshot file");
+
+  fs::create_directories(run / "pictures" / "frame_000000.png.tmp");  // cairo cannot write the picture
+  expect_refusal(render(quoted(run) + " --no-animation --frames-dir pictures"), 1, (run / "pictures").string(),
+                 "picture blocked");
+
+  if (::geteuid() == 0) return;  // root writes into read-only folders
+  const fs::path ro = dir_ / "readonly";
+  fs::copy(shared_ / "run", ro, fs::copy_options::recursive);
+  ::chmod(ro.c_str(), 0555);
+  expect_refusal(render(quoted(ro) + " --no-animation"), 1, (ro / "frames").string(), "read-only run folder");
+  ::chmod(ro.c_str(), 0755);
+}
+
+}  // namespace
