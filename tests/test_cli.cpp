@@ -748,7 +748,11 @@ TEST_F(Cli, AFinishedWedgeExtendedWithResumeEqualsOneRunToTheNewEnd) {
 TEST_F(Cli, AnUnknownCommandIsNamedAndTheHelpIsClean) {
   const auto r = orogen_cli("frobnicate --out x", dir_);
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("unknown command 'frobnicate'; the commands are run, render"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("unknown command 'frobnicate'; orogen takes a command first: run, render"), std::string::npos)
+      << r.err;
+  const auto option = orogen_cli("--frob run", dir_);
+  EXPECT_EQ(option.status, 2);
+  EXPECT_NE(option.err.find("unknown option '--frob'"), std::string::npos) << option.err;
   const auto help = orogen_cli("render --help", dir_);
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("--no-animation"), std::string::npos) << help.out;

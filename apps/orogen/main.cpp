@@ -85,13 +85,19 @@ int main(int argc, char** argv) {
   config_cmd->add_flag("--markdown", markdown, "print the key reference as Markdown tables instead");
 
   // CLI11 reads an unknown first word as a stray argument ("A subcommand is required"): name it.
-  if (argc > 1 && argv[1][0] != '-' && app.get_subcommands([&](CLI::App* c) { return c->get_name() == argv[1]; }).empty()) {
-    std::string known;
-    for (const CLI::App* c : app.get_subcommands([](CLI::App*) { return true; }))
-      known += (known.empty() ? "" : ", ") + c->get_name();
-    std::cerr << "error: unknown command '" << argv[1] << "'; the commands are " << known
-              << " (orogen --help)\n";
-    return 2;
+  if (argc > 1) {
+    const std::string first = argv[1];
+    const bool known_option = first == "-h" || first == "--help" || first == "--version";
+    const bool known_command =
+        !app.get_subcommands([&](CLI::App* c) { return c->get_name() == first; }).empty();
+    if (!known_option && !known_command) {
+      std::string known;
+      for (const CLI::App* c : app.get_subcommands([](CLI::App*) { return true; }))
+        known += (known.empty() ? "" : ", ") + c->get_name();
+      std::cerr << "error: unknown " << (first.starts_with('-') ? "option '" : "command '") << first
+                << "'; orogen takes a command first: " << known << " (orogen --help)\n";
+      return 2;
+    }
   }
   try {
     app.parse(argc, argv);

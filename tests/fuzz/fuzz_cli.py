@@ -433,7 +433,7 @@ def names_something(err, case, case_dir):
             return True
     for arg in case.argv:
         token = arg.split("=", 1)[0].strip()
-        if len(token) >= 2 and token in err:
+        if (len(token) >= 2 and token in err) or (len(arg) >= 2 and arg in err) or ("'%s'" % arg) in err:
             return True
     return False
 
