@@ -387,6 +387,7 @@ TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
       {"--out " + d + "new' --threads abc", {"--threads"}},
       {"--out " + d + "new' --bogus", {"--bogus"}},
       {"--out " + d + "a_file'", {"a_file", "cannot create the run folder"}},
+      {"--out ''", {"--out needs a folder"}},
       {"--out " + d + "done'", {"already holds a run", "--resume"}},
       {"--resume " + d + "new'", {"no such folder"}},
       {"--resume " + d + "done' --set contact.mu=0.2", {"--set contact.mu=0.2 would change what the run computes"}},

@@ -361,6 +361,7 @@ int run_command(const RunOptions& opt) {
   bool started = false;  // the folder holds a run that --resume can continue
   try {
     if (opt.resume && opt.out.empty()) throw UsageError("--resume needs a run folder");
+    if (opt.out.empty()) throw UsageError("--out needs a folder (got an empty one)");
     const Config config = opt.resume ? config_for_resume(opt) : Config::load(opt.config, opt.overrides);
     if (!opt.resume && fs::exists(opt.out / "config.toml"))
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
