@@ -43,18 +43,15 @@ int main(int argc, char** argv) {
                          "horizons | cluster | field:NAME (field:max_rel_disp uses the hot colormap)")->capture_default_str();
   render_cmd->add_option("--width", render.width_px, "picture width in pixels")
       ->capture_default_str()
-      ->check(not_empty)
-      ->check(CLI::Range(200, 16384));  // narrower leaves no room for the plot; wider than the renderer draws
+      ->check(not_empty);  // the range is checked by render_command, with the other options
   render_cmd->add_option("--every", render.every, "draw every n-th output")
       ->capture_default_str()
-      ->check(not_empty)
-      ->check(CLI::Range(1, 1000000));
+      ->check(not_empty);
   render_cmd->add_option("--frames-dir", render.frames_name,
                          "subfolder for the frames (the animation is named after it)")->capture_default_str();
   render_cmd->add_option("--fps", render.fps, "animation frames per second")
       ->capture_default_str()
-      ->check(not_empty)
-      ->check(CLI::Range(1, 240));
+      ->check(not_empty);
   bool no_animation = false;  // a plain flag: CLI11 prints "{false}" after a negated one in --help
   render_cmd->add_flag("--no-animation", no_animation, "only the PNG frames");
   render_cmd->add_flag("--vectors", render.vectors,
