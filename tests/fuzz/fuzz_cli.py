@@ -455,7 +455,8 @@ def read_capped(path):
 def sanitized(binary):
     """Whether the binary was built with AddressSanitizer (which needs terabytes of address space)."""
     with open(binary, "rb") as f:
-        return b"AddressSanitizer" in f.read()
+        data = f.read()
+    return b"__asan_init" in data or b"AddressSanitizer" in data  # libasan linked dynamically, or static
 
 
 def run_case(case, binary, root, timeout, memory_mb):
