@@ -39,6 +39,7 @@ from matplotlib.lines import Line2D  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import orogen_io as oio  # noqa: E402
+from powerlaw import power_law_fit, simple_model_height  # noqa: E402,F401 (shared fits)
 
 try:
     import h5py
@@ -125,36 +126,6 @@ def read_topography(h5_path, max_profiles=None):
 # Statistics
 
 
-def power_law_fit(s, h, s_min=FIT_S_MIN):
-    """Least-squares fit of h = a s^b in log-log space over s > s_min, h > 0.
-
-    Returns a dict with a, a_se, b, b_se, r2, n, s_min (standard errors from the residual
-    variance; a_se by the delta method), or None with fewer than 3 usable points."""
-    s = np.asarray(s, dtype=float)
-    h = np.asarray(h, dtype=float)
-    ok = np.isfinite(s) & np.isfinite(h) & (s > s_min) & (h > 0)
-    n = int(ok.sum())
-    if n < 3:
-        return None
-    lx, ly = np.log(s[ok]), np.log(h[ok])
-    mx, my = lx.mean(), ly.mean()
-    sxx = float(np.sum((lx - mx) ** 2))
-    if sxx <= 0:
-        return None
-    b = float(np.sum((lx - mx) * (ly - my)) / sxx)
-    c = float(my - b * mx)
-    resid = ly - (c + b * lx)
-    ss_res = float(np.sum(resid ** 2))
-    ss_tot = float(np.sum((ly - my) ** 2))
-    sigma2 = ss_res / (n - 2)
-    b_se = math.sqrt(sigma2 / sxx)
-    c_se = math.sqrt(sigma2 * (1.0 / n + mx * mx / sxx))
-    a = math.exp(c)
-    r2 = 1.0 - ss_res / ss_tot if ss_tot > 0 else 1.0
-    return dict(a=a, a_se=a * c_se, b=b, b_se=b_se, r2=r2, n=n, s_min=s_min,
-                residual_se=math.sqrt(sigma2))
-
-
 def late_rows(series, fraction=LATE_FRACTION):
     """Rows in the last `fraction` of the run, by S."""
     s = column(series, "S")
@@ -169,17 +140,6 @@ def late_mean(series, name, fraction=LATE_FRACTION):
     v = column(series, name)
     ok = late_rows(series, fraction) & has_wedge(series) & np.isfinite(v)
     return float(np.mean(v[ok])) if ok.any() else float("nan")
-
-
-def simple_model_height(s, alpha_deg, beta_deg):
-    """Simple Model (MODEL section 9): H/h0 = sqrt(2 tan a tan b / (tan a + tan b) S)."""
-    if not (np.isfinite(alpha_deg) and np.isfinite(beta_deg)):
-        return None
-    ta, tb = math.tan(math.radians(alpha_deg)), math.tan(math.radians(beta_deg))
-    if ta <= 0 or tb <= 0:
-        return None
-    k = 2.0 * ta * tb / (ta + tb)
-    return np.sqrt(k * np.clip(np.asarray(s, dtype=float), 0, None))
 
 
 def retro_onset(series, threshold=RETRO_ONSET_X):

@@ -5,6 +5,7 @@
 
 #include "config/config.hpp"
 #include "config/schema.hpp"
+#include "run/ensemble_command.hpp"
 #include "run/render_command.hpp"
 #include "run/runner.hpp"
 #include "run/sweep_command.hpp"
@@ -77,6 +78,23 @@ int main(int argc, char** argv) {
   sweep_cmd->add_flag("--render", sweep.render, "render each finished run (horizons and max_rel_disp)");
   sweep_cmd->add_flag("--dry-run", sweep.dry_run, "check the sweep, list its runs and what each needs; run nothing");
 
+  orogen::EnsembleOptions ensemble;
+  std::string ensemble_file, ensemble_out;
+  auto* ensemble_cmd = app.add_subcommand("ensemble", "run a preset over seeds and/or variants (in parallel, or "
+                                                      "under mpirun) and compute their statistics (resumable)");
+  ensemble_cmd->add_option("file", ensemble_file, "ensemble file (TOML, see docs/ensembles.md)")->required();
+  ensemble_cmd->add_option("--out,-o", ensemble_out, "ensemble folder: members/, aggregate/, results.csv, results.md")
+      ->required();
+  ensemble_cmd->add_option("--jobs,-j", ensemble.jobs, "members at once (default: the cores, or the members if fewer)")
+      ->check(not_empty)
+      ->check(CLI::Range(1, 4096));
+  ensemble_cmd->add_option("--threads", ensemble.threads,
+                           "threads of each member (default: the cores left over when members are fewer)")
+      ->check(not_empty)
+      ->check(CLI::Range(1, orogen::kMaxThreads));
+  ensemble_cmd->add_flag("--dry-run", ensemble.dry_run, "check the ensemble, list its members; run nothing");
+  ensemble_cmd->add_flag("--no-stats", ensemble.no_stats, "run the members only (python/ensemble_stats.py DIR later)");
+
   bool markdown = false;
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
   config_cmd->add_flag("--markdown", markdown, "print the key reference as Markdown tables instead");
@@ -123,6 +141,11 @@ int main(int argc, char** argv) {
     sweep.file = sweep_file;
     sweep.out = sweep_out;
     return orogen::sweep_command(sweep);
+  }
+  if (*ensemble_cmd) {
+    ensemble.file = ensemble_file;
+    ensemble.out = ensemble_out;
+    return orogen::ensemble_command(ensemble);
   }
   render.dir = render_dir;
   render.animation = !no_animation;

@@ -1,0 +1,35 @@
+#pragma once
+// The little MPI that `orogen ensemble` needs: which rank this process is among how many,
+// agreeing on a verdict, and combining per-member exit statuses. Built without MPI (or run
+// outside mpirun) it is one rank of one, so the command works the same everywhere.
+#include <vector>
+
+namespace orogen {
+
+class MpiSession {
+ public:
+  // Initialises MPI only when this process was started by an MPI launcher (mpirun sets
+  // OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_RANK): a plain `orogen ensemble` stays one process
+  // and never pays for (or depends on) an MPI runtime.
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  // Ranks of this job on this machine (to share its cores), 1 without MPI.
+  int local_size() const { return local_size_; }
+  // Whether every rank says yes (a barrier too).
+  bool all(bool mine) const;
+  // Element-wise maximum over the ranks, returned on every rank (a barrier too).
+  std::vector<int> max(const std::vector<int>& mine) const;
+  // Whether this build has MPI at all.
+  static bool built_with_mpi();
+
+ private:
+  bool active_ = false;
+  int rank_ = 0, size_ = 1, local_size_ = 1;
+};
+
+}  // namespace orogen
