@@ -79,7 +79,7 @@ def auto_offset(s, x, s_min=0.0, iterations=200):
     hi = top - 1e-9 * span  # x - x0 must stay positive
     lo = top - span
     # Widen downward while the error still falls there, up to MAX_SPANS spans below the data:
-    # farther, the series is nearer a straight line than a power law and has no offset to find.
+    # farther, the series grows like ln S (the b -> 0 limit) and has no offset to find.
     while _log_rss(s, x, lo) <= _log_rss(s, x, lo + 0.1 * (hi - lo)):
         if top - lo >= MAX_SPANS * span:
             return float("nan")

@@ -97,6 +97,11 @@ struct Work {
 }  // namespace
 
 int ensemble_command(const EnsembleOptions& opt) {
+  if (MpiSession::launched_without_mpi()) {
+    std::cerr << "error: started by mpirun, but this orogen was built without MPI (install libopenmpi-dev and "
+                 "build again; docs/ensembles.md): every process would run every member\n";
+    return 2;
+  }
   MpiSession mpi;
   const bool root = mpi.rank() == 0;
   EnsemblePlan plan;

@@ -67,6 +67,8 @@ std::vector<int> MpiSession::max(const std::vector<int>& mine) const {
   return mine;
 }
 
+bool MpiSession::launched_without_mpi() { return !built_with_mpi() && launched_by_mpi(); }
+
 bool MpiSession::built_with_mpi() {
 #ifdef OROGEN_HAVE_MPI
   return true;

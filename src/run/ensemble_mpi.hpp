@@ -26,6 +26,9 @@ class MpiSession {
   std::vector<int> max(const std::vector<int>& mine) const;
   // Whether this build has MPI at all.
   static bool built_with_mpi();
+  // Started by mpirun, but built without MPI: every process would think itself the only one
+  // and run every member, so the command refuses.
+  static bool launched_without_mpi();
 
  private:
   bool active_ = false;
