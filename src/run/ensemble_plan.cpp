@@ -146,6 +146,24 @@ std::string read_text(const fs::path& file) {
   return text.str();
 }
 
+// A list of distinct seeds (run.seed values); empty when the key is absent.
+std::vector<std::int64_t> read_seeds(const toml::node* node, const std::string& path, const std::string& key) {
+  std::vector<std::int64_t> seeds;
+  if (!node) return seeds;
+  const auto* list = node->as_array();
+  if (!list) throw config_error(where(path, *node), key, shown(*node), "expected a list of seeds, e.g. [1, 2, 3, 4]");
+  if (list->empty()) throw config_error(where(path, *node), key, "[]", "expected at least one seed");
+  for (const auto& e : *list) {
+    const auto v = e.value_exact<std::int64_t>();
+    if (!v || *v < 0 || *v > 2147483647)
+      throw config_error(where(path, e), key, shown(e), "expected whole numbers from 0 to 2147483647");
+    if (std::find(seeds.begin(), seeds.end(), *v) != seeds.end())
+      throw config_error(where(path, e), key, shown(e), "listed twice: give each seed once");
+    seeds.push_back(*v);
+  }
+  return seeds;
+}
+
 EnsembleStats read_stats(const toml::table* t, const std::string& path) {
   EnsembleStats s;
   for (const auto& name : ensemble_series()) s.offset[name] = "\"auto\"";
@@ -203,20 +221,7 @@ EnsemblePlan load_ensemble(const fs::path& file) {
   if (const auto text = string_key(*ens, "preset", path, "ensemble.preset"); !text.empty())
     preset = preset_path(file, text, *ens->get("preset"), "ensemble.preset");
 
-  std::vector<std::int64_t> seeds;
-  if (const toml::node* node = ens->get("seeds")) {
-    const auto* list = node->as_array();
-    if (!list) throw config_error(where(path, *node), "ensemble.seeds", shown(*node), "expected a list of seeds, e.g. [1, 2, 3, 4]");
-    if (list->empty()) throw config_error(where(path, *node), "ensemble.seeds", "[]", "expected at least one seed");
-    for (const auto& e : *list) {
-      const auto v = e.value_exact<std::int64_t>();
-      if (!v || *v < 0 || *v > 2147483647)
-        throw config_error(where(path, e), "ensemble.seeds", shown(e), "expected whole numbers from 0 to 2147483647");
-      if (std::find(seeds.begin(), seeds.end(), *v) != seeds.end())
-        throw config_error(where(path, e), "ensemble.seeds", shown(e), "listed twice: give each seed once");
-      seeds.push_back(*v);
-    }
-  }
+  const std::vector<std::int64_t> seeds = read_seeds(ens->get("seeds"), path, "ensemble.seeds");
   if (const toml::node* node = ens->get("set")) {
     if (!node->is_table())
       throw config_error(where(path, *node), "ensemble.set", shown(*node), "expected a table of key = value overrides");
@@ -232,6 +237,7 @@ EnsemblePlan load_ensemble(const fs::path& file) {
     fs::path preset;
     std::vector<std::string> set;
     std::string source;
+    std::vector<std::int64_t> seeds;  // its own, else the ensemble's
   };
   std::vector<Entry> entries;
   if (const toml::node* node = root.get("member")) {
@@ -242,8 +248,10 @@ EnsemblePlan load_ensemble(const fs::path& file) {
     for (const auto& e : *list) {
       const auto& t = *e.as_table();
       const std::string src = where(path, e);
-      only_keys(t, path, "member.", {"name", "preset", "set"});
-      Entry entry{string_key(t, "name", path, "member.name"), {}, {}, src};
+      only_keys(t, path, "member.", {"name", "preset", "set", "seeds"});
+      Entry entry{string_key(t, "name", path, "member.name"), {}, {}, src, {}};
+      entry.seeds = read_seeds(t.get("seeds"), path, "member.seeds");
+      if (entry.seeds.empty()) entry.seeds = seeds;
       if (entry.name.empty()) throw config_error(src, "member.name", "", "missing: every [[member]] needs a name");
       if (!good_name(entry.name))
         throw config_error(where(path, *t.get("name")), "member.name", shown(*t.get("name")),
@@ -270,14 +278,16 @@ EnsemblePlan load_ensemble(const fs::path& file) {
                                                                  "relative to the ensemble file");
     if (seeds.empty())
       throw config_error(path, "ensemble.seeds", "", "missing: without [[member]] tables, list the seeds to run");
-    entries.push_back({"", *preset, {}, path});
+    entries.push_back({"", *preset, {}, path, seeds});
   }
-  if (entries.size() * std::max<std::size_t>(1, seeds.size()) > kMaxMembers)
-    throw config_error(path, "ensemble.seeds", "", fmt::format("makes more than {} members", kMaxMembers));
+  std::size_t total = 0;
+  for (const auto& entry : entries) total += std::max<std::size_t>(1, entry.seeds.size());
+  if (total > kMaxMembers) throw config_error(path, "ensemble.seeds", "", fmt::format("makes more than {} members", kMaxMembers));
 
   // Members: each entry once per seed (entry order, then seed order).
   for (const auto& entry : entries) {
-    const std::size_t n = std::max<std::size_t>(1, seeds.size());
+    const auto& seeds_here = entry.seeds;
+    const std::size_t n = std::max<std::size_t>(1, seeds_here.size());
     for (std::size_t k = 0; k < n; ++k) {
       EnsembleMember m;
       m.group = entry.name;
@@ -285,10 +295,10 @@ EnsemblePlan load_ensemble(const fs::path& file) {
       m.overrides = plan.fixed;
       m.overrides.insert(m.overrides.end(), entry.set.begin(), entry.set.end());
       m.name = entry.name;
-      if (!seeds.empty()) {
-        m.seed = seeds[k];
-        m.overrides.push_back("run.seed=" + std::to_string(seeds[k]));
-        m.name += (m.name.empty() ? "seed" : "_seed") + std::to_string(seeds[k]);
+      if (!seeds_here.empty()) {
+        m.seed = seeds_here[k];
+        m.overrides.push_back("run.seed=" + std::to_string(seeds_here[k]));
+        m.name += (m.name.empty() ? "seed" : "_seed") + std::to_string(seeds_here[k]);
       }
       m.resolved_toml = resolve_member(m, entry.source);
       plan.members.push_back(std::move(m));
