@@ -1,4 +1,5 @@
 #include "config/config.hpp"
+#include "config/toml_file.hpp"
 
 #include <toml++/toml.h>
 
@@ -268,7 +269,9 @@ std::string read_config_text(const std::filesystem::path& file) {
   return text;
 }
 
-toml::table parse_file(const std::filesystem::path& file) {
+}  // namespace
+
+toml::table parse_toml_file(const std::filesystem::path& file) {
   const std::string path = file.string();
   const std::string text = read_config_text(file);
   if (const std::size_t line = too_deep_line(text))
@@ -282,8 +285,6 @@ toml::table parse_file(const std::filesystem::path& file) {
         "TOML syntax error: " + std::string(e.description()));
   }
 }
-
-}  // namespace
 
 ConfigError config_error(std::string_view source, std::string_view key, std::string_view value,
                          std::string_view allowed) {
@@ -306,7 +307,7 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
   Config cfg;
   if (file) {
     const std::string path = file->string();
-    const toml::table root = parse_file(*file);
+    const toml::table root = parse_toml_file(*file);
     // Gather every leaf with its dotted name, then report in file order (toml++ sorts keys).
     struct Entry {
       std::string name;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "config/config.hpp"
+#include "config/toml_file.hpp"
 #include "config/schema.hpp"
 #include "experiments/experiment.hpp"
 #include "world/world.hpp"
@@ -137,14 +138,6 @@ std::string resolve_member(const EnsembleMember& m, const std::string& source) {
   }
 }
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in || fs::is_directory(file))
-    throw config_error(file.string(), "", "", "cannot read the ensemble file (does it exist?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // A list of distinct seeds (run.seed values); empty when the key is absent.
 std::vector<std::int64_t> read_seeds(const toml::node* node, const std::string& path, const std::string& key) {
@@ -201,14 +194,7 @@ EnsemblePlan load_ensemble(const fs::path& file) {
   EnsemblePlan plan;
   plan.file = file;
   const std::string path = file.string();
-  toml::table root;
-  try {
-    root = toml::parse(read_text(file), path);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    throw config_error(fmt::format("{}, line {}, column {}", path, b.line, b.column), "", "",
-                       "TOML syntax error: " + std::string(e.description()));
-  }
+  const toml::table root = parse_toml_file(file);
   only_keys(root, path, "", {"ensemble", "member"});
   const auto* ens = root["ensemble"].as_table();
   if (!ens)

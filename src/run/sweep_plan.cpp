@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "config/config.hpp"
+#include "config/toml_file.hpp"
 #include "config/schema.hpp"
 #include "experiments/experiment.hpp"
 
@@ -101,13 +102,6 @@ auto at_source(const std::string& source, F&& check) {
   }
 }
 
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in || fs::is_directory(file)) throw config_error(file.string(), "", "", "cannot read the sweep file (does it exist?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // Keeps run names portable and shell-friendly: letters, digits and ._+- only.
 std::string sanitise(const std::string& value) {
@@ -143,14 +137,7 @@ SweepPlan load_sweep(const fs::path& file) {
   SweepPlan plan;
   plan.file = file;
   const std::string path = file.string();
-  toml::table root;
-  try {
-    root = toml::parse(read_text(file), path);
-  } catch (const toml::parse_error& e) {
-    const auto& b = e.source().begin;
-    throw config_error(fmt::format("{}, line {}, column {}", path, b.line, b.column), "", "",
-                       "TOML syntax error: " + std::string(e.description()));
-  }
+  const toml::table root = parse_toml_file(file);
 
   const toml::table *sweep = nullptr, *set = nullptr, *matrix = nullptr;
   for (const auto& [k, node] : root) {
