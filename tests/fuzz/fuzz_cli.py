@@ -381,6 +381,38 @@ def sweep_case(rng, case, base_toml, default_keys):
     case.note = "sweep " + form + " " + key
 
 
+def ensemble_case(rng, case, base_toml, default_keys):
+    """`orogen ensemble` of up to three tiny members, with odd seeds, overrides and members."""
+    key = rng.choice(["contact.mu", "settle.mu", "contact.kn", "run.seed", "nosuch.key", "layer"] + default_keys)
+    seeds = rng.sample(["1", "2", "3", "4"], rng.choice([1, 2, 3]))
+    if rng.random() < 0.3:
+        seeds[rng.randrange(len(seeds))] = rng.choice(EXTREMES[:20])
+    form = rng.choice(["seeds", "seeds", "set", "members", "duplicate", "bad_preset", "junk", "empty"])
+    case.files["base.toml"] = base_toml.encode()
+    head = '[ensemble]\npreset = "base.toml"\n'
+    if form == "seeds":
+        text = head + "seeds = [%s]\n" % ", ".join(seeds)
+    elif form == "set":
+        text = head + 'seeds = [1, 2]\n[ensemble.set]\n"%s" = %s\n' % (key, rng.choice(["0.2", "3"] + EXTREMES[:20]))
+    elif form == "members":
+        text = head + '[[member]]\nname = "a"\n[[member]]\nname = "b"\nset = { "%s" = %s }\n' % (
+            key, rng.choice(["0.2", "1"] + EXTREMES[:20]))
+    elif form == "duplicate":
+        text = head + '[[member]]\nname = "a"\n[[member]]\nname = "a"\n'
+    elif form == "bad_preset":
+        text = '[ensemble]\npreset = "%s"\nseeds = [1]\n' % rng.choice(["nosuch.toml", "", "/dev/null", ".", "e.toml"])
+    elif form == "junk":
+        text, _ = mutate_config(rng, head + "seeds = [1, 2]\n", default_keys)
+    else:
+        text = ""
+    case.files["e.toml"] = text.encode("utf-8", "surrogateescape")
+    extra = rng.choice([[], ["--jobs", rng.choice(ODD_NUMBERS)], ["--threads", rng.choice(ODD_NUMBERS)],
+                        ["--dry-run"], ["--dry-run"]])
+    case.argv = ["ensemble", "e.toml", "--out", rng.choice(["en", "en", "", "e.toml"])] + extra
+    case.allow_exit1 = True  # a member that failed, or an --out that is a file
+    case.note = "ensemble " + form + " " + key
+
+
 def sweep_base_toml():
     lines = ["[run]", 'experiment = "packing"', "threads = 1"]
     section = None
@@ -397,8 +429,8 @@ def sweep_base_toml():
 
 def generate(seed, index, sources, default_keys, base_run, base_toml):
     rng = random.Random("%d:%d" % (seed, index))
-    kind = rng.choices(["config", "set", "file", "cli", "configcmd", "render", "sweep"],
-                       weights=[40, 18, 5, 10, 2, 15, 10])[0]
+    kind = rng.choices(["config", "set", "file", "cli", "configcmd", "render", "sweep", "ensemble"],
+                       weights=[40, 18, 5, 10, 2, 15, 10, 6])[0]
     case = Case(index, kind)
     if kind == "config":
         config_case(rng, case, sources, default_keys)
@@ -412,6 +444,8 @@ def generate(seed, index, sources, default_keys, base_run, base_toml):
         config_command_case(rng, case)
     elif kind == "render":
         render_case(rng, case, base_run)
+    elif kind == "ensemble":
+        ensemble_case(rng, case, base_toml, default_keys)
     else:
         sweep_case(rng, case, base_toml, default_keys)
     return case
