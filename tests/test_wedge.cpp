@@ -341,6 +341,7 @@ TEST(Wedge, RisesAboveTheSPointWithDivergingFronts) {
     if (r.w.time >= next_output - 1e-9 * interval) {
       next_output += interval;
       rows.push_back(r.exp->measure(r.w));
+      r.exp->after_output(r.w);
     }
   ASSERT_GE(rows.size(), 19u);
   const auto& last = rows.back();
@@ -369,6 +370,15 @@ TEST(Wedge, RisesAboveTheSPointWithDivergingFronts) {
   ASSERT_LT(first + 2, rows.size());
   const auto width = [&](const std::vector<double>& row) { return r.col(row, "Dr") - r.col(row, "Dp"); };
   EXPECT_GT(width(last), width(rows[first]) + 3.0);
+  // summary.csv (and so a sweep's results table) carries the shape at the end and the growth law.
+  std::map<std::string, double> summary;
+  for (const SummaryValue& v : r.exp->summary(r.w)) summary[v.name] = v.value;
+  for (const char* name : {"S", "H", "Dp", "Mp", "Dr", "Mr", "T"})
+    EXPECT_EQ(summary.at(std::string(name) + "_final"), r.col(last, name)) << name;
+  EXPECT_GT(summary.at("H_b"), 0.2);  // a growing wedge; the fit itself: WedgeHistory tests
+  EXPECT_LT(summary.at("H_b"), 2.0);
+  EXPECT_GT(summary.at("alpha_late_deg"), 0.0);
+  EXPECT_GT(summary.at("beta_late_deg"), 0.0);
 }
 
 }  // namespace

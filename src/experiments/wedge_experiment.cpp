@@ -254,7 +254,13 @@ std::vector<std::pair<std::string, double>> WedgeExperiment::scalars(const World
           {"view_y_min", view_box(w)[2]}, {"view_y_max", view_box(w)[3]}};
 }
 
-void WedgeExperiment::after_output(const World& w) { displacements_.remember(w); }
+void WedgeExperiment::after_output(const World& w) {
+  displacements_.remember(w);
+  const std::vector<double> m = measure(w);  // the order of columns()
+  history_.record({m[2], m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10]});
+}
+
+std::vector<SummaryValue> WedgeExperiment::summary(const World&) const { return history_.summary(0.25 * spec_.s_end); }
 
 void WedgeExperiment::save(ArchiveWriter& out) const {
   save_tile(out, tile_);
@@ -266,6 +272,7 @@ void WedgeExperiment::save(ArchiveWriter& out) const {
   out.put_scalar("wedge.entered", entered_);
   out.put("wedge.pinned", pinned_);
   displacements_.save(out, "wedge");
+  history_.save(out, "wedge");
 }
 
 void WedgeExperiment::load(const ArchiveReader& in) {
@@ -278,6 +285,7 @@ void WedgeExperiment::load(const ArchiveReader& in) {
   entered_ = in.get_scalar<std::int64_t>("wedge.entered");
   in.get("wedge.pinned", pinned_);
   displacements_.load(in, "wedge");
+  history_.load(in, "wedge");
 }
 
 std::string WedgeExperiment::status(const World& w) const {

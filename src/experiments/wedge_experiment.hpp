@@ -11,6 +11,7 @@
 #include "experiments/packing_experiment.hpp"
 #include "analysis/displacement_tracker.hpp"
 #include "analysis/surface.hpp"
+#include "experiments/wedge_summary.hpp"
 #include "packing/tile.hpp"
 
 namespace orogen {
@@ -49,6 +50,7 @@ class WedgeExperiment final : public Experiment {
   std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const override;
   std::vector<std::pair<std::string, double>> scalars(const World& world) const override;
   void after_output(const World& world) override;
+  std::vector<SummaryValue> summary(const World& world) const override;
   void save(ArchiveWriter& out) const override;
   void load(const ArchiveReader& in) override;
   std::string status(const World& world) const override;
@@ -91,6 +93,7 @@ class WedgeExperiment final : public Experiment {
   std::int64_t entered_ = 0; // discs ever added to the model
   std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base
   DisplacementTracker displacements_;  // for the per-output displacement fields
+  WedgeHistory history_;               // the shape at each output, for summary.csv
 };
 
 }  // namespace orogen
