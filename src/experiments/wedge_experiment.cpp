@@ -245,7 +245,7 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
           static_cast<double>(left), static_cast<double>(entered_), window_pro_ / h0, window_retro_ / h0};
 }
 
-std::vector<std::pair<std::string, std::vector<double>>> WedgeExperiment::fields(const World& w) const {
+std::vector<SnapshotField> WedgeExperiment::fields(const World& w) const {
   return displacements_.fields(w);
 }
 
