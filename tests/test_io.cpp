@@ -25,6 +25,7 @@
 #include "io/snapshot_reader.hpp"
 #include "io/snapshot_writer.hpp"
 #include "io/vtp_writer.hpp"
+#include "io/wall_display.hpp"
 #include "particles/discs.hpp"
 
 namespace fs = std::filesystem;
@@ -73,7 +74,7 @@ SnapshotFrame make_frame(const Discs& d, std::int64_t step) {
   std::vector<double> disp(d.size());
   for (std::size_t i = 0; i < d.size(); ++i) disp[i] = std::exp(-static_cast<double>(i)) + static_cast<double>(step);
   f.fields = {{"max_rel_disp", disp, "d", "largest relative displacement"}};
-  f.walls = {{0, 0, 10, 0}, {10, 0, 10, 5.5}};
+  f.walls = {{0, -3, 0.5, -3}, {0.5, -3, 0.5, 0.5}};  // near the discs: not clipped for display
   return f;
 }
 
@@ -278,6 +279,21 @@ TEST_F(IoSnapshot, EveryDatasetHasUnitsAndADescriptionAndTheConfigTravels) {
   EXPECT_EQ(SnapshotReader(p).metadata().strings.at(kConfigAttr), "[run]\nseed = 2\n");
 }
 
+TEST(WallDisplay, ClipsLongWallsToTheDiscsAndKeepsShortOnesExact) {
+  const std::vector<double> x = {0.0, 10.0}, y = {0.0, 2.0};  // box [-10, 20] x [-10, 12]
+  const std::vector<std::array<double, 4>> walls = {
+      {-1e7, 0.0, 0.0, 0.0},    // the wedge's half-infinite base: clipped at x = -10
+      {0.1, -0.3, 9.7, 1.0 / 3}, // inside: kept bit for bit
+      {5.0, -1.0, 5.0, 100.0},  // vertical, clipped at y = 12
+      {50.0, 0.0, 60.0, 0.0}};  // wholly outside: left out
+  const auto shown = walls_for_display(walls, x, y);
+  ASSERT_EQ(shown.size(), 3u);
+  EXPECT_EQ(shown[0], (std::array<double, 4>{-10.0, 0.0, 0.0, 0.0}));
+  EXPECT_EQ(shown[1], walls[1]);
+  EXPECT_EQ(shown[2], (std::array<double, 4>{5.0, -1.0, 5.0, 12.0}));
+  EXPECT_EQ(walls_for_display(walls, {}, {}), walls);
+}
+
 TEST_F(IoSnapshot, XdmfSidecarListsEveryOutputAndSurvivesReopen) {
   const fs::path p = dir_ / "snapshots.h5";
   const Discs d = make_discs(5);
@@ -438,7 +454,7 @@ TEST_F(IoVtp, WellFormedWithAllPointsAndExactData) {
     EXPECT_EQ(points[3 * i + 2], 0.0);
   }
   EXPECT_EQ(std::vector<double>(points.begin() + 15, points.end()),
-            (std::vector<double>{0, 0, 0, 10, 0, 0, 10, 0, 0, 10, 5.5, 0}));
+            (std::vector<double>{0, -3, 0, 0.5, -3, 0, 0.5, -3, 0, 0.5, 0.5, 0}));
   auto first5 = [](auto v) { return decltype(v)(v.begin(), v.begin() + 5); };
   const auto radius = vtp_array<double>(xml, "radius");
   ASSERT_EQ(radius.size(), 9u);

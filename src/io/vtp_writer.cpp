@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "io/atomic_file.hpp"
+#include "io/wall_display.hpp"
 
 namespace orogen {
 namespace {
@@ -142,7 +143,8 @@ void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame) {
     if (field.values.size() != n)
       throw std::invalid_argument(
           fmt::format("vtp field '{}' has {} values for {} discs", field.name, field.values.size(), n));
-  const std::size_t n_walls = frame.walls.size(), pad = 2 * n_walls;
+  const auto walls = walls_for_display(frame.walls, d.x, d.y);
+  const std::size_t n_walls = walls.size(), pad = 2 * n_walls;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   std::string out;
@@ -180,7 +182,7 @@ void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame) {
   out += "      </PointData>\n";
 
   std::vector<double> points = with_zero_z(d.x, d.y);
-  for (const auto& w : frame.walls) points.insert(points.end(), {w[0], w[1], 0.0, w[2], w[3], 0.0});
+  for (const auto& w : walls) points.insert(points.end(), {w[0], w[1], 0.0, w[2], w[3], 0.0});
   out += "      <Points>\n";
   data_array<double>(out, "Points", points, 3);
   out += "      </Points>\n";

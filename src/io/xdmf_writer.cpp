@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/wall_display.hpp"
 
 namespace orogen {
 namespace {
@@ -59,13 +61,15 @@ void write_discs(std::string& out, const XdmfOutput& o) {
 }
 
 void write_walls(std::string& out, const XdmfOutput& o) {
-  // walls is [n_walls, 4] (ax, ay, bx, by), row-major: the same bytes as [2 n_walls, 2] XY points,
-  // so wall w is the line from point 2w to point 2w + 1.
+  // Wall w is the line from point 2w (ax, ay) to point 2w + 1 (bx, by).
+  std::string xy;
+  for (const auto& w : o.walls) xy += fmt::format(" {} {} {} {}", w[0], w[1], w[2], w[3]);
   out += fmt::format("        <Grid Name=\"walls\" GridType=\"Uniform\">\n"
                      "          <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\"/>\n"
-                     "          <Geometry GeometryType=\"XY\">\n            {}\n          </Geometry>\n"
-                     "        </Grid>\n",
-                     o.n_walls, hdf_item(o, "walls", fmt::format("{} 2", 2 * o.n_walls), "Float", 8));
+                     "          <Geometry GeometryType=\"XY\">\n"
+                     "            <DataItem Dimensions=\"{} 2\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">{}</DataItem>\n"
+                     "          </Geometry>\n        </Grid>\n",
+                     o.walls.size(), 2 * o.walls.size(), xy);
 }
 
 }  // namespace
@@ -79,8 +83,11 @@ XdmfOutput describe_xdmf_output(hid_t group, std::string file, std::string group
   if (x.dims.size() != 1) throw h5::Error("snapshot dataset 'x' is not 1-D");
   o.n_discs = x.dims[0];
   if (h5::exists(group, "walls")) {
-    const auto w = h5::dataset_info(group, "walls");
-    if (w.dims.size() == 2 && w.dims[1] == 4) o.n_walls = w.dims[0];
+    const h5::Matrix m = h5::read_2d(group, "walls");
+    std::vector<std::array<double, 4>> walls(m.rows);
+    if (m.cols == 4)
+      for (std::size_t r = 0; r < m.rows; ++r) std::copy_n(m.data.begin() + 4 * r, 4, walls[r].begin());
+    o.walls = walls_for_display(walls, h5::read<double>(group, "x"), h5::read<double>(group, "y"));
   }
   for (const auto& name : h5::list(group)) {
     if (name == "walls") continue;
@@ -102,7 +109,7 @@ void write_xdmf(const std::filesystem::path& path, const std::vector<XdmfOutput>
                        "        <Time Value=\"{}\"/>\n",
                        o.time);
     if (o.n_discs > 0) write_discs(out, o);
-    if (o.n_walls > 0) write_walls(out, o);
+    if (!o.walls.empty()) write_walls(out, o);
     out += "      </Grid>\n";
   }
   out += "    </Grid>\n  </Domain>\n</Xdmf>\n";

@@ -1,10 +1,12 @@
 #pragma once
 // XDMF (version 2) sidecars that let ParaView and VisIt open Orogen's HDF5 snapshots with their
 // stock XDMF readers: a temporal collection with, per output, the discs as a point set
-// (Polyvertex, every per-disc dataset an attribute) and the walls as line cells, each pointing
-// straight at the datasets of that output's HDF5 file (docs/output-files.md).
+// (Polyvertex, every per-disc dataset an attribute, pointing straight at the datasets of that
+// output's HDF5 file) and the walls as line cells, clipped around the discs and written inline
+// (docs/output-files.md).
 #include <hdf5.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -24,11 +26,12 @@ struct XdmfOutput {
   std::string file;   // the HDF5 file, relative to the sidecar's folder
   std::string group;  // the output's group in that file, ending in '/': "/" or "/output_000000/"
   double time = 0;
-  std::size_t n_discs = 0, n_walls = 0;
+  std::size_t n_discs = 0;
+  std::vector<std::array<double, 4>> walls;  // clipped for display (wall_display.hpp), written inline
   std::vector<XdmfArray> arrays;  // the 1-D per-disc datasets, in name order
 };
 
-// Reads what the sidecar needs from an output's group (its `time` attribute, `x` and
+// Reads what the sidecar needs from an output's group (its `time` attribute, `x`, `y` and
 // `walls`, and every 1-D dataset with one value per disc).
 XdmfOutput describe_xdmf_output(hid_t group, std::string file, std::string group_path);
 
