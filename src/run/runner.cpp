@@ -198,7 +198,9 @@ class Run {
   std::vector<std::string> preamble() const {
     return {fmt::format("Orogen {} series, experiment '{}': one row per output step", OROGEN_VERSION,
                         config_.get_string("run.experiment")),
-            "lengths in units of the largest disc diameter d, time in sqrt(d/g), unless a column says otherwise"};
+            "lengths in units of the largest disc diameter d, time in sqrt(d/g); each column's unit in [] after its "
+            "description",
+            fmt::format("h0 = {} d (the layer thickness; the unit of a wedge's lengths)", exp_->h0())};
   }
 
   void output() {
