@@ -5,6 +5,7 @@ sees as one JSON line, and renders the last output to a PNG.
     pvpython --force-offscreen-rendering tests/python/paraview_open_run.py RUN_DIR OUT.png
 """
 import json
+import os
 import sys
 
 from paraview import servermanager
@@ -49,6 +50,14 @@ def main(run_dir, png):
     walls = parts.get("walls")
     if walls is not None:
         report["xmf_wall_points"] = [list(walls.GetPoint(i))[:2] for i in range(walls.GetNumberOfPoints())]
+
+    # A packing run's packing.h5 has a sidecar of its own (one output, in a group of the file).
+    if os.path.exists(run_dir + "/packing.xmf"):
+        packing = XDMFReader(FileNames=[run_dir + "/packing.xmf"])
+        packing.UpdatePipelineInformation()
+        report["packing_times"] = list(packing.TimestepValues)
+        packing.UpdatePipeline(report["packing_times"][-1])
+        report["packing_blocks"] = {name: describe(ds) for name, ds in blocks(servermanager.Fetch(packing)).items()}
 
     pvd = PVDReader(FileName=run_dir + "/run.pvd")
     pvd.UpdatePipelineInformation()

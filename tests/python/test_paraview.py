@@ -24,6 +24,10 @@ BINARY = os.environ.get("OROGEN_BINARY", os.path.join(REPO, "build", "release", 
 WEDGE = ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
          "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
          "--set", "wedge.outputs=4", "--set", "output.progress=never", "--threads", "1"]
+PACKING = ["--set", "run.experiment=packing", "--set", "particles.packing=random_discs", "--set", "layer.length=10",
+           "--set", "layer.thickness=3", "--set", "contact.kn=1000", "--set", "settle.relax_time=1",
+           "--set", "settle.ke_threshold=1e-3", "--set", "output.interval=2", "--set", "output.progress=never",
+           "--threads", "1"]
 VTK_VERTEX, VTK_POLY_VERTEX, VTK_LINE, VTK_POLY_LINE = 1, 2, 3, 4
 
 
@@ -65,6 +69,24 @@ class ParaViewOpensARun(unittest.TestCase):
             cls.arrays = sorted(k for k in last.keys() if last[k].ndim == 1)
             cls.walls = last["walls"][()].tolist()
             cls.x, cls.y = last["x"][()], last["y"][()]
+
+    def test_packing_file_opens(self):
+        run_dir = os.path.join(self.tmp, "packing")
+        subprocess.run([BINARY, "run", "--out", run_dir] + PACKING, check=True, capture_output=True)
+        done = subprocess.run(self.command + [SCRIPT, run_dir, os.path.join(self.tmp, "packing.png")],
+                              capture_output=True, text=True, timeout=300)
+        lines = [l for l in done.stdout.splitlines() if l.startswith("OROGEN_PARAVIEW ")]
+        self.assertTrue(done.returncode == 0 and lines, done.stderr[-3000:])
+        seen = json.loads(lines[-1][len("OROGEN_PARAVIEW "):])
+        with h5py.File(os.path.join(run_dir, "packing.h5"), "r") as f:
+            g = f["output_000000"]
+            time, n, arrays = float(g.attrs["time"]), g["x"].shape[0], sorted(k for k in g if g[k].ndim == 1)
+            n_walls = g["walls"].shape[0]
+        self.assertEqual(seen["packing_times"], [time])
+        self.assertEqual(seen["packing_blocks"]["discs"]["points"], n)
+        self.assertEqual(seen["packing_blocks"]["discs"]["arrays"], arrays)
+        # A finished packing keeps no walls (the box is gone); any there are show as line cells.
+        self.assertEqual(seen["packing_blocks"].get("walls", {"cells": 0})["cells"], n_walls)
 
     @classmethod
     def tearDownClass(cls):
