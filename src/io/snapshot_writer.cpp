@@ -195,8 +195,9 @@ void SnapshotWriter::append(const SnapshotFrame& frame) {
     // Each output file carries the configuration too, so that one copied alone says what it is.
     if (const auto it = meta_.strings.find(kConfigAttr); it != meta_.strings.end())
       h5::set_attr_string(f.id(), kConfigAttr, it->second);
-    xdmf_.push_back(describe_xdmf_output(f.id(), output_file(path_, count_).string(), "/"));
+    XdmfOutput listed = describe_xdmf_output(f.id(), output_file(path_, count_).string(), "/");
     write_file_atomically(path_.parent_path() / output_file(path_, count_), f.image());
+    xdmf_.push_back(std::move(listed));  // only once the file is there
   }
   ++count_;
   write_index();
@@ -221,7 +222,9 @@ void write_single_snapshot(const std::filesystem::path& path, const SnapshotMeta
   {
     h5::Group g = h5::Group::create(f.id(), snapshot_group_name(0));
     write_group(g.id(), frame, storage);
-    xdmf = describe_xdmf_output(g.id(), path.filename().string(), "/" + snapshot_group_name(0) + "/");
+    std::string group_path("/");  // built piecewise: GCC 12 warns falsely on "/" + std::string
+    group_path.append(snapshot_group_name(0)).append("/");
+    xdmf = describe_xdmf_output(g.id(), path.filename().string(), group_path);
     g.close();
   }
   write_file_atomically(path, f.image());
