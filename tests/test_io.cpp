@@ -25,6 +25,7 @@
 #include "io/snapshot_reader.hpp"
 #include "io/snapshot_writer.hpp"
 #include "io/vtp_writer.hpp"
+#include "io/wall_display.hpp"
 #include "particles/discs.hpp"
 
 namespace fs = std::filesystem;
@@ -72,8 +73,8 @@ SnapshotFrame make_frame(const Discs& d, std::int64_t step) {
   f.discs = &d;
   std::vector<double> disp(d.size());
   for (std::size_t i = 0; i < d.size(); ++i) disp[i] = std::exp(-static_cast<double>(i)) + static_cast<double>(step);
-  f.fields = {{"max_rel_disp", disp}};
-  f.walls = {{0, 0, 10, 0}, {10, 0, 10, 5.5}};
+  f.fields = {{"max_rel_disp", disp, "d", "largest relative displacement"}};
+  f.walls = {{0, -3, 0.5, -3}, {0.5, -3, 0.5, 0.5}};  // near the discs: not clipped for display
   return f;
 }
 
@@ -237,7 +238,7 @@ TEST_F(IoSnapshot, RoundTripIsBitIdentical) {
       });
       EXPECT_TRUE(same_bits(s.field(name), want)) << name;
     }
-    EXPECT_TRUE(same_bits(s.field("max_rel_disp"), f.fields[0].second));
+    EXPECT_TRUE(same_bits(s.field("max_rel_disp"), f.fields[0].values));
     EXPECT_FALSE(s.fields.contains("fx"));
     EXPECT_FALSE(s.fields.contains("mass"));
     if (k == 0) {
@@ -253,6 +254,74 @@ std::vector<fs::path> sorted_files_in(const fs::path& dir) {
   std::vector<fs::path> names = files_in(dir);
   std::sort(names.begin(), names.end());
   return names;
+}
+
+TEST_F(IoSnapshot, EveryDatasetHasUnitsAndADescriptionAndTheConfigTravels) {
+  const fs::path p = dir_ / "snapshots.h5";
+  const Discs d = make_discs(4);
+  SnapshotWriter w(p, SnapshotMetadata{{}, {{kConfigAttr, "[run]\nseed = 1\n"}}});
+  w.append(make_frame(d, 1));
+  h5::File f = h5::File::open(dir_ / "snapshots" / "output_000000.h5", h5::File::Mode::ReadOnly);
+  EXPECT_EQ(h5::get_attr_string(f.id(), kConfigAttr), "[run]\nseed = 1\n");
+  std::size_t datasets = 0;
+  for (const auto& name : h5::list(f.id())) {
+    SCOPED_TRACE(name);
+    EXPECT_FALSE(h5::get_dataset_attr_string(f.id(), name, "units").empty());
+    EXPECT_FALSE(h5::get_dataset_attr_string(f.id(), name, "description").empty());
+    ++datasets;
+  }
+  EXPECT_EQ(datasets, kSnapshotDiscArrays.size() + 2);  // + max_rel_disp and walls
+  EXPECT_EQ(h5::get_dataset_attr_string(f.id(), "max_rel_disp", "units"), "d");
+  EXPECT_EQ(h5::get_dataset_attr_string(f.id(), "vx", "units"), "sqrt(g d)");
+  f.close();
+  // A resume that extends the run stores its new configuration in the index.
+  w.set_metadata_string(kConfigAttr, "[run]\nseed = 2\n");
+  EXPECT_EQ(SnapshotReader(p).metadata().strings.at(kConfigAttr), "[run]\nseed = 2\n");
+}
+
+TEST(WallDisplay, ClipsLongWallsToTheDiscsAndKeepsShortOnesExact) {
+  const std::vector<double> x = {0.0, 10.0}, y = {0.0, 2.0};  // box [-10, 20] x [-10, 12]
+  const std::vector<std::array<double, 4>> walls = {
+      {-1e7, 0.0, 0.0, 0.0},    // the wedge's half-infinite base: clipped at x = -10
+      {0.1, -0.3, 9.7, 1.0 / 3}, // inside: kept bit for bit
+      {5.0, -1.0, 5.0, 100.0},  // vertical, clipped at y = 12
+      {50.0, 0.0, 60.0, 0.0}};  // wholly outside: left out
+  const auto shown = walls_for_display(walls, x, y);
+  ASSERT_EQ(shown.size(), 3u);
+  EXPECT_EQ(shown[0], (std::array<double, 4>{-10.0, 0.0, 0.0, 0.0}));
+  EXPECT_EQ(shown[1], walls[1]);
+  EXPECT_EQ(shown[2], (std::array<double, 4>{5.0, -1.0, 5.0, 12.0}));
+  EXPECT_EQ(walls_for_display(walls, {}, {}), walls);
+}
+
+TEST_F(IoSnapshot, XdmfSidecarListsEveryOutputAndSurvivesReopen) {
+  const fs::path p = dir_ / "snapshots.h5";
+  const Discs d = make_discs(5);
+  {
+    SnapshotWriter w(p);
+    EXPECT_EQ(check_xml_nesting(slurp(dir_ / "snapshots.xmf")), "Xdmf");
+    for (int k = 0; k < 3; ++k) w.append(make_frame(d, k));
+  }
+  const std::string xmf = slurp(dir_ / "snapshots.xmf");
+  EXPECT_EQ(check_xml_nesting(xmf), "Xdmf");
+  auto count = [](const std::string& s, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = s.find(what); at != std::string::npos; at = s.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count(xmf, "<Time "), 3u);
+  EXPECT_EQ(count(xmf, "TopologyType=\"Polyvertex\" NumberOfElements=\"5\""), 3u);
+  EXPECT_EQ(count(xmf, "TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"2\""), 3u);
+  EXPECT_NE(xmf.find("snapshots/output_000002.h5:/max_rel_disp"), std::string::npos);
+  EXPECT_NE(xmf.find("<Time Value=\"0.1\"/>"), std::string::npos);
+  // Every per-disc dataset is an attribute (x and y too, for colouring by position).
+  EXPECT_EQ(count(xmf, "<Attribute "), 3 * (kSnapshotDiscArrays.size() + 1));
+  // Reopened after a kill: the sidecar lists the kept outputs only, read back from their files.
+  SnapshotWriter::reopen(p, 2);
+  const std::string kept = slurp(dir_ / "snapshots.xmf");
+  EXPECT_EQ(count(kept, "<Time "), 2u);
+  EXPECT_EQ(kept.find("output_000002"), std::string::npos);
+  EXPECT_EQ(kept.substr(0, 200), xmf.substr(0, 200));
 }
 
 TEST_F(IoSnapshot, EachOutputIsAFileOfItsOwnLinkedFromTheIndex) {
@@ -319,7 +388,10 @@ TEST_F(IoSnapshot, SingleSnapshotFileStandsAlone) {
   const fs::path p = dir_ / "packing.h5";
   const Discs d = make_discs(5);
   write_single_snapshot(p, SnapshotMetadata{{{"length", 8.0}}, {{"content", "orogen-packing"}}}, make_frame(d, 7));
-  EXPECT_EQ(files_in(dir_), std::vector<fs::path>{"packing.h5"});
+  auto files = files_in(dir_);
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<fs::path>{"packing.h5", "packing.xmf"}));  // the data and its XDMF sidecar
+  EXPECT_NE(slurp(dir_ / "packing.xmf").find("packing.h5:/output_000000/radius"), std::string::npos);
   SnapshotReader r(p);
   ASSERT_EQ(r.count(), 1);
   EXPECT_EQ(r.read(0).step, 7);
@@ -331,10 +403,13 @@ TEST_F(IoSnapshot, RejectsBadFramesWithoutTouchingTheFile) {
   const Discs d = make_discs(3);
   SnapshotWriter w(p);
   SnapshotFrame f = make_frame(d, 1);
-  f.fields.push_back({"short", {1.0}});
+  f.fields.push_back({"short", {1.0}, "d", "too short"});
   EXPECT_THROW(w.append(f), std::invalid_argument);
   f = make_frame(d, 1);
-  f.fields.push_back({"x", std::vector<double>(3)});
+  f.fields.push_back({"x", std::vector<double>(3), "d", "a reserved name"});
+  EXPECT_THROW(w.append(f), std::invalid_argument);
+  f = make_frame(d, 1);
+  f.fields.push_back({"undocumented", std::vector<double>(3), "", ""});  // every dataset says its unit
   EXPECT_THROW(w.append(f), std::invalid_argument);
   EXPECT_EQ(SnapshotReader(p).count(), 0);
 }
@@ -367,20 +442,34 @@ TEST_F(IoVtp, WellFormedWithAllPointsAndExactData) {
   const std::string xml = slurp(p);
   EXPECT_EQ(check_xml_nesting(xml), "VTKFile");
   EXPECT_NE(xml.find("type=\"PolyData\""), std::string::npos);
-  EXPECT_NE(xml.find("NumberOfPoints=\"5\""), std::string::npos);
+  // 5 discs, then the 2 walls' end points.
+  EXPECT_NE(xml.find("NumberOfPoints=\"9\""), std::string::npos);
   EXPECT_NE(xml.find("NumberOfVerts=\"5\""), std::string::npos);
+  EXPECT_NE(xml.find("NumberOfLines=\"2\""), std::string::npos);
   const auto points = vtp_array<double>(xml, "Points");
-  ASSERT_EQ(points.size(), 15u);
+  ASSERT_EQ(points.size(), 27u);
   for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(points[3 * i]), std::bit_cast<std::uint64_t>(d.x[i]));
     EXPECT_EQ(points[3 * i + 1], d.y[i]);
     EXPECT_EQ(points[3 * i + 2], 0.0);
   }
-  EXPECT_TRUE(same_bits(vtp_array<double>(xml, "radius"), d.radius));
-  EXPECT_TRUE(same_bits(vtp_array<std::int64_t>(xml, "id"), d.id));
-  EXPECT_TRUE(same_bits(vtp_array<double>(xml, "max_rel_disp"), make_frame(d, 4).fields[0].second));
-  EXPECT_EQ(vtp_array<double>(xml, "velocity").size(), 15u);
-  EXPECT_EQ(vtp_array<std::int64_t>(xml, "offsets").back(), 5);
+  EXPECT_EQ(std::vector<double>(points.begin() + 15, points.end()),
+            (std::vector<double>{0, -3, 0, 0.5, -3, 0, 0.5, -3, 0, 0.5, 0.5, 0}));
+  auto first5 = [](auto v) { return decltype(v)(v.begin(), v.begin() + 5); };
+  const auto radius = vtp_array<double>(xml, "radius");
+  ASSERT_EQ(radius.size(), 9u);
+  EXPECT_TRUE(same_bits(first5(radius), d.radius));
+  EXPECT_EQ(radius.back(), 0.0);
+  EXPECT_TRUE(same_bits(first5(vtp_array<std::int64_t>(xml, "id")), d.id));
+  const auto disp = vtp_array<double>(xml, "max_rel_disp");
+  EXPECT_TRUE(same_bits(first5(disp), make_frame(d, 4).fields[0].values));
+  EXPECT_TRUE(std::isnan(disp.back()));
+  EXPECT_EQ(vtp_array<double>(xml, "velocity").size(), 27u);
+  EXPECT_EQ(vtp_array<std::int64_t>(xml, "offsets").back(), 5);  // the Verts' offsets come first
+  const std::size_t lines = xml.find("<Lines>");
+  ASSERT_NE(lines, std::string::npos);
+  EXPECT_EQ(vtp_array<std::int64_t>(xml.substr(lines), "connectivity"), (std::vector<std::int64_t>{5, 6, 7, 8}));
+  EXPECT_EQ(vtp_array<std::int64_t>(xml.substr(lines), "offsets"), (std::vector<std::int64_t>{2, 4}));
   EXPECT_EQ(files_in(dir_), std::vector<fs::path>{"output_000000.vtp"});
   if (has_python_module("xml.etree.ElementTree")) {
     EXPECT_EQ(std::system(("/usr/bin/python3 -c \"import xml.etree.ElementTree as E; E.parse('" + p.string() +

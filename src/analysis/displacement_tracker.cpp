@@ -22,7 +22,7 @@ void DisplacementTracker::remember(const World& w) {
   }
 }
 
-std::vector<std::pair<std::string, std::vector<double>>> DisplacementTracker::fields(const World& w) const {
+std::vector<SnapshotField> DisplacementTracker::fields(const World& w) const {
   const auto& d = w.discs;
   std::vector<double> rel(d.size(), 0.0), dx3(d.size(), kNaN), dy3(d.size(), kNaN);
   // Position of disc i at an earlier output (NaN if it did not exist then).
@@ -49,7 +49,10 @@ std::vector<std::pair<std::string, std::vector<double>>> DisplacementTracker::fi
     dx3[i] = d.x[i] - prev(prev_x_[2], i);
     dy3[i] = d.y[i] - prev(prev_y_[2], i);
   }
-  return {{"max_rel_disp", std::move(rel)}, {"disp3_x", std::move(dx3)}, {"disp3_y", std::move(dy3)}};
+  return {{"max_rel_disp", std::move(rel), "d",
+           "largest displacement since the previous output relative to any touching disc"},
+          {"disp3_x", std::move(dx3), "d", "displacement over the last three outputs, horizontal; NaN for younger discs"},
+          {"disp3_y", std::move(dy3), "d", "displacement over the last three outputs, vertical; NaN for younger discs"}};
 }
 
 void DisplacementTracker::save(ArchiveWriter& out, const std::string& prefix) const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/binary_archive.hpp"
+#include "io/snapshot_field.hpp"
 #include "world/world.hpp"
 
 namespace orogen {
@@ -18,7 +19,7 @@ class DisplacementTracker {
   // Called after each output step: shifts the stored positions back by one output.
   void remember(const World& world);
   // max_rel_disp, disp3_x, disp3_y, by disc index (NaN where a disc did not exist then).
-  std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const;
+  std::vector<SnapshotField> fields(const World& world) const;
 
   void save(ArchiveWriter& out, const std::string& prefix) const;
   void load(const ArchiveReader& in, const std::string& prefix);

@@ -171,7 +171,7 @@ const std::vector<KeySpec>& schema() {
       real("output.interval", 10.0, gt(0), none, "model time between output steps [sqrt(d/g)]"),
       integer("output.checkpoint_every", 10, ge(0), le(1000000),
               "write a checkpoint every this many output steps, 0 = only at the end"),
-      boolean("output.vtp", true, "write the ParaView series"),
+      boolean("output.vtp", true, "write the .vtp series (run.pvd, vtp/); snapshots.xmf, always written, serves ParaView too"),
       text("output.progress", "auto", {"auto", "always", "never"},
            "progress line: auto = only on a terminal"),
   };

@@ -175,9 +175,9 @@ BiaxialRow BiaxialExperiment::row(const World& w) const {
 }
 
 std::vector<SeriesColumn> BiaxialExperiment::columns() const {
-  return {{"step", "model time step"},
+  return {{"step", "model time step [-]"},
           {"time", "model time since the sample was settled [sqrt(d/g)]"},
-          {"phase", "0 consolidating isotropically to sigma3, 1 shearing, 2 done"},
+          {"phase", "0 consolidating isotropically to sigma3, 1 shearing, 2 done [-]"},
           {"axial_strain", "axial shortening since shearing began, (H0 - H) / H0 (0 before) [-]"},
           {"vol_strain", "area change since shearing began, (A - A0) / A0, positive when dilating [-]"},
           {"width", "distance between the side walls [d]"},
@@ -189,9 +189,9 @@ std::vector<SeriesColumn> BiaxialExperiment::columns() const {
           {"phi_deg", "mobilised friction angle asin((sigma1 - sigma3) / (sigma1 + sigma3)) [deg]"},
           {"mu_mobilised", "tan(phi): the mobilised bulk friction coefficient [-]"},
           {"coordination",
-           "mean number of touching neighbours per disc (walls and discs of the same cluster excluded)"},
+           "mean number of touching neighbours per disc (walls and discs of the same cluster excluded) [-]"},
           {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
-          {"n_discs", "number of discs"}};
+          {"n_discs", "number of discs [-]"}};
 }
 
 std::vector<double> BiaxialExperiment::measure(const World& w) const {
@@ -241,12 +241,12 @@ std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
       {"sigma3_max_dev", "largest |sigma3 - target| / target over the output steps while shearing [-]",
        r.sigma3_max_dev},
       {"solid_fraction_start", "disc area / sample area when shearing began [-]", solid_fraction_start_},
-      {"coordination_start", "contacts per disc when shearing began (walls and discs of the same cluster excluded)",
+      {"coordination_start", "contacts per disc when shearing began (walls and discs of the same cluster excluded) [-]",
        coordination_start_},
       {"inertial_number", "2 x axial strain rate x mean diameter x sqrt(1 / mean stress) in the residual state; "
                           "quasi-static below about 1e-3 [-]",
        inertial},
-      {"n_discs", "number of discs", static_cast<double>(w.discs.size())}};
+      {"n_discs", "number of discs [-]", static_cast<double>(w.discs.size())}};
   // Critical taper of a dry, non-cohesive wedge on a flat base (MODEL §9) from each bulk friction.
   for (double mu_b : kTaperBases)
     for (const auto& [name, phi] : {std::pair{"residual", r.phi_residual}, std::pair{"peak", r.phi_peak}})

@@ -35,7 +35,7 @@ class BiaxialExperiment final : public Experiment {
   bool advance(World& world) override;
   std::vector<SeriesColumn> columns() const override;
   std::vector<double> measure(const World& world) const override;
-  std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const override {
+  std::vector<SnapshotField> fields(const World& world) const override {
     return displacements_.fields(world);
   }
   void after_output(const World& world) override;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/binary_archive.hpp"
+#include "io/snapshot_field.hpp"
 #include "world/world.hpp"
 
 namespace orogen {
@@ -39,7 +40,7 @@ class Experiment {
   virtual std::vector<SeriesColumn> columns() const = 0;
   virtual std::vector<double> measure(const World& world) const = 0;
   // Extra per-disc fields stored in each snapshot (name, values by disc index).
-  virtual std::vector<std::pair<std::string, std::vector<double>>> fields(const World&) const { return {}; }
+  virtual std::vector<SnapshotField> fields(const World&) const { return {}; }
   // Scalars stored on each snapshot group (e.g. S).
   virtual std::vector<std::pair<std::string, double>> scalars(const World&) const { return {}; }
   // Called after each output step is written (e.g. to remember positions for the next one).

@@ -69,14 +69,14 @@ bool PackingExperiment::advance(World& w) {
 }
 
 std::vector<SeriesColumn> PackingExperiment::columns() const {
-  return {{"step", "model time step"},
+  return {{"step", "model time step [-]"},
           {"time", "model time [sqrt(d/g)]"},
           {"phase", "settling phase: 0 falling, 1 re-settling after trimming to the target thickness, "
-                    "2 relaxing without drag, 3 done"},
-          {"n_discs", "number of discs"},
-          {"n_clusters", "number of rigid clusters"},
+                    "2 relaxing without drag, 3 done [-]"},
+          {"n_discs", "number of discs [-]"},
+          {"n_clusters", "number of rigid clusters [-]"},
           {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
-          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded)"},
+          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded) [-]"},
           {"max_overlap", "largest disc-disc overlap [d]"},
           {"surface_mean", "mean height of the upper surface [d]"}};
 }
@@ -116,6 +116,7 @@ void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {
   meta.numbers["d_min"] = packing_.d_min;
   meta.numbers["d_max"] = packing_.d_max;
   meta.numbers["seed"] = static_cast<double>(packing_.seed);
+  if (!config_toml_.empty()) meta.strings[kConfigAttr] = config_toml_;
   const Surface s = measure_surface(w.discs, 0.0, packing_.length,
                                     settle_.column_width_factor * mean_radius(w.discs));
   SnapshotFrame frame;
@@ -144,14 +145,14 @@ std::vector<SummaryValue> PackingExperiment::summary(const World& w) const {
   const double bulk = packing_.length * mean;
   const double fraction = bulk > 0 ? solid / bulk : 0.0;
   return {{"time", "model time when the layer came to rest [sqrt(d/g)]", w.time},
-          {"steps", "time steps taken", static_cast<double>(w.step)},
-          {"n_discs", "number of discs", static_cast<double>(w.discs.size())},
-          {"n_clusters", "number of rigid clusters", static_cast<double>(w.clusters.size())},
+          {"steps", "time steps taken [-]", static_cast<double>(w.step)},
+          {"n_discs", "number of discs [-]", static_cast<double>(w.discs.size())},
+          {"n_clusters", "number of rigid clusters [-]", static_cast<double>(w.clusters.size())},
           {"thickness", "mean height of the upper surface: the settled layer's thickness [d]", mean},
           {"roughness", "standard deviation of the upper surface's column heights [d]", spread},
-          {"solid_fraction", "disc area / (layer.length * thickness)", fraction},
-          {"porosity", "1 - solid_fraction", 1.0 - fraction},
-          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded)", stats.contacts_per_disc},
+          {"solid_fraction", "disc area / (layer.length * thickness) [-]", fraction},
+          {"porosity", "1 - solid_fraction [-]", 1.0 - fraction},
+          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded) [-]", stats.contacts_per_disc},
           {"max_overlap", "largest disc-disc overlap [d]", stats.max_overlap}};
 }
 

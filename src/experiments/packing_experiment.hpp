@@ -21,7 +21,9 @@ struct SettleSpec {
 
 class PackingExperiment final : public Experiment {
  public:
-  PackingExperiment(PackingSpec packing, SettleSpec settle) : packing_(packing), settle_(settle) {}
+  // `config_toml`: the resolved configuration, stored in packing.h5 (empty: none stored).
+  PackingExperiment(PackingSpec packing, SettleSpec settle, std::string config_toml = {})
+      : packing_(packing), settle_(settle), config_toml_(std::move(config_toml)) {}
 
   void setup(World& world) override;
   bool advance(World& world) override;
@@ -44,6 +46,7 @@ class PackingExperiment final : public Experiment {
 
   PackingSpec packing_;
   SettleSpec settle_;
+  std::string config_toml_;
   int phase_ = Falling;
   double mu_ = 0.3;  // the material's friction (contact.mu), restored for the relax phase
   double phase_start_time_ = 0;

@@ -21,7 +21,7 @@ namespace {
 std::unique_ptr<Experiment> make_packing(const Config& c) {
   check_material_size(c, c.get_float("layer.length"), c.get_float("layer.thickness"),
                       {"layer.length", "layer.thickness"});
-  return std::make_unique<PackingExperiment>(packing_spec(c), settle_spec(c));
+  return std::make_unique<PackingExperiment>(packing_spec(c), settle_spec(c), c.to_toml());
 }
 
 // The material a wedge run holds at its end: the retro-side layer, the pro-side stretch, the

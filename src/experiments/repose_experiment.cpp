@@ -96,20 +96,20 @@ ProfileFit ReposeExperiment::profile(const World& w) const {
 }
 
 std::vector<SeriesColumn> ReposeExperiment::columns() const {
-  return {{"step", "model time step"},
+  return {{"step", "model time step [-]"},
           {"time", "model time since the wall was opened [sqrt(d/g)]"},
-          {"n_discs", "discs in the box"},
-          {"n_removed", "discs that left through the open side so far"},
+          {"n_discs", "discs in the box [-]"},
+          {"n_removed", "discs that left through the open side so far [-]"},
           {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
-          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded)"},
+          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded) [-]"},
           {"angle", "surface slope: least-squares line through the slope columns, descending to the open side [deg]"},
-          {"angle_r2", "coefficient of determination of that line"},
+          {"angle_r2", "coefficient of determination of that line [-]"},
           {"angle_rms", "root-mean-square distance of the slope columns from that line [d]"},
           {"concavity", "descent angle of a quadratic fit at the top of the slope minus at its foot; "
                         "> 0 concave, ~0 planar [deg]"},
           {"slope_x_lo", "left end of the fitted slope (column centre) [d]"},
           {"slope_x_hi", "right end of the fitted slope (column centre) [d]"},
-          {"n_columns", "surface columns on the slope used by the fits"}};
+          {"n_columns", "surface columns on the slope used by the fits [-]"}};
 }
 
 std::vector<double> ReposeExperiment::measure(const World& w) const {
@@ -130,13 +130,13 @@ std::vector<SummaryValue> ReposeExperiment::summary(const World& w) const {
   const auto n = static_cast<double>(w.discs.size());
   return {{"angle_deg", "angle of repose: slope of the straight-line fit of the surface at rest [deg]",
            f.valid() ? -std::atan(f.slope) * kDegPerRad : nan},
-          {"angle_r2", "coefficient of determination of that line", f.valid() ? f.r2 : nan},
+          {"angle_r2", "coefficient of determination of that line [-]", f.valid() ? f.r2 : nan},
           {"angle_rms", "root-mean-square residual of that line [d]", f.valid() ? f.rms : nan},
           {"concavity_deg", "slope at the top minus slope at the foot of a quadratic fit; > 0 concave [deg]",
            f.valid() ? f.concavity * kDegPerRad : nan},
           {"slope_length", "horizontal extent of the fitted slope [d]", f.valid() ? f.x_hi - f.x_lo : nan},
-          {"removed_fraction", "fraction of the discs that left the box", 1.0 - n / static_cast<double>(initial_discs_)},
-          {"at_rest", "1 if the material came to rest, 0 if repose.max_time ended the run", at_rest_ ? 1.0 : 0.0},
+          {"removed_fraction", "fraction of the discs that left the box [-]", 1.0 - n / static_cast<double>(initial_discs_)},
+          {"at_rest", "1 if the material came to rest, 0 if repose.max_time ended the run [-]", at_rest_ ? 1.0 : 0.0},
           {"time_to_rest", "model time from opening to rest [sqrt(d/g)]", at_rest_ ? rest_time_ : w.time}};
 }
 

@@ -38,7 +38,7 @@ class ReposeExperiment final : public Experiment {
   bool advance(World& world) override;
   std::vector<SeriesColumn> columns() const override;
   std::vector<double> measure(const World& world) const override;
-  std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const override {
+  std::vector<SnapshotField> fields(const World& world) const override {
     return displacements_.fields(world);
   }
   void after_output(const World& world) override { displacements_.remember(world); }

@@ -93,9 +93,9 @@ SinglyVergentShape SinglyVergentExperiment::shape(const World& w) const {
 }
 
 std::vector<SeriesColumn> SinglyVergentExperiment::columns() const {
-  return {{"step", "model time step"},
+  return {{"step", "model time step [-]"},
           {"time", "model time since the backstop started [sqrt(d/g)]"},
-          {"shortening", "backstop displacement / h0"},
+          {"shortening", "backstop displacement / h0 [-]"},
           {"backstop", "x of the backstop [h0]"},
           {"front", "deformation front: left end of the surface raised above h0 + 1.5 d_max, contiguous from the backstop [h0]"},
           {"width", "wedge width: backstop minus front [h0]"},
@@ -104,8 +104,8 @@ std::vector<SeriesColumn> SinglyVergentExperiment::columns() const {
           {"taper_front", "least-squares surface slope over the front half of the wedge [deg]"},
           {"taper_back", "least-squares surface slope over the back half, next to the backstop [deg]"},
           {"taper_mean", "atan(height / width) [deg]"},
-          {"slip_base", "fraction of touching basal contacts at the Coulomb limit"},
-          {"n_discs", "discs in the model"}};
+          {"slip_base", "fraction of touching basal contacts at the Coulomb limit [-]"},
+          {"n_discs", "discs in the model [-]"}};
 }
 
 std::vector<double> SinglyVergentExperiment::measure(const World& w) const {

@@ -43,7 +43,7 @@ class SinglyVergentExperiment final : public Experiment {
   bool advance(World& world) override;
   std::vector<SeriesColumn> columns() const override;
   std::vector<double> measure(const World& world) const override;
-  std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const override {
+  std::vector<SnapshotField> fields(const World& world) const override {
     return displacements_.fields(world);
   }
   std::vector<std::pair<std::string, double>> scalars(const World& world) const override;

@@ -196,9 +196,9 @@ Surface WedgeExperiment::surface(const World& w) const {
 }
 
 std::vector<SeriesColumn> WedgeExperiment::columns() const {
-  return {{"step", "model time step"},
+  return {{"step", "model time step [-]"},
           {"time", "model time [sqrt(d/g)]"},
-          {"S", "normalised convergence: plate displacement / h0"},
+          {"S", "normalised convergence: plate displacement / h0 [-]"},
           {"H", "wedge height: highest elevation minus h0 [h0]"},
           {"Dp", "pro-side deformation front: smallest x of discs above h0 + d_max, from the S-point [h0]"},
           {"Mp", "pro-side marker front: smallest x of discs above the marker height [h0]"},
@@ -209,13 +209,13 @@ std::vector<SeriesColumn> WedgeExperiment::columns() const {
           {"beta", "mean retro-wedge taper: slope from the peak down to Dr [deg]"},
           {"alpha_fit", "least-squares slope of the surface between Dp and the peak [deg]"},
           {"beta_fit", "least-squares slope of the surface between the peak and Dr, sign flipped [deg]"},
-          {"slip_pro", "fraction of touching pro-side basal contacts at the Coulomb limit"},
-          {"slip_retro", "fraction of touching retro-side basal contacts at the Coulomb limit"},
-          {"n_active", "discs in the force computation that move by forces (dynamic)"},
-          {"n_discs", "discs in the model (active and kinematic slab)"},
-          {"n_eroded", "discs removed by erosion so far"},
-          {"n_left", "discs that left the model space so far"},
-          {"n_entered", "discs ever added (initial layer and inflow); n_entered = n_discs + n_eroded + n_left"},
+          {"slip_pro", "fraction of touching pro-side basal contacts at the Coulomb limit [-]"},
+          {"slip_retro", "fraction of touching retro-side basal contacts at the Coulomb limit [-]"},
+          {"n_active", "discs in the force computation that move by forces (dynamic) [-]"},
+          {"n_discs", "discs in the model (active and kinematic slab) [-]"},
+          {"n_eroded", "discs removed by erosion so far [-]"},
+          {"n_left", "discs that left the model space so far [-]"},
+          {"n_entered", "discs ever added (initial layer and inflow); n_entered = n_discs + n_eroded + n_left [-]"},
           {"window_pro", "pro-side edge of the active region, from the S-point [h0]"},
           {"window_retro", "retro-side edge of the active region, from the S-point [h0]"}};
 }
@@ -245,7 +245,7 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
           static_cast<double>(left), static_cast<double>(entered_), window_pro_ / h0, window_retro_ / h0};
 }
 
-std::vector<std::pair<std::string, std::vector<double>>> WedgeExperiment::fields(const World& w) const {
+std::vector<SnapshotField> WedgeExperiment::fields(const World& w) const {
   return displacements_.fields(w);
 }
 

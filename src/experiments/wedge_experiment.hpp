@@ -47,7 +47,7 @@ class WedgeExperiment final : public Experiment {
   bool advance(World& world) override;
   std::vector<SeriesColumn> columns() const override;
   std::vector<double> measure(const World& world) const override;
-  std::vector<std::pair<std::string, std::vector<double>>> fields(const World& world) const override;
+  std::vector<SnapshotField> fields(const World& world) const override;
   std::vector<std::pair<std::string, double>> scalars(const World& world) const override;
   void after_output(const World& world) override;
   std::vector<SummaryValue> summary(const World& world) const override;

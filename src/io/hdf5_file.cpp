@@ -408,6 +408,17 @@ void set_attr_string(hid_t obj, const std::string& name, std::string_view value)
   a.close();
 }
 
+void set_dataset_attr_string(hid_t loc, const std::string& dataset, const std::string& name, std::string_view value) {
+  Object ds = open_dataset(loc, dataset);
+  set_attr_string(ds.id(), name, value);
+  ds.close();
+}
+
+std::string get_dataset_attr_string(hid_t loc, const std::string& dataset, const std::string& name) {
+  const Object ds = open_dataset(loc, dataset);
+  return get_attr_string(ds.id(), name);
+}
+
 bool has_attr(hid_t obj, const std::string& name) {
   const htri_t r = H5Aexists(obj, name.c_str());
   if (r < 0) fail("cannot look up attribute " + quoted(name));

@@ -120,6 +120,9 @@ void set_attr_double(hid_t obj, const std::string& name, double value);
 void set_attr_int64(hid_t obj, const std::string& name, std::int64_t value);
 void set_attr_string(hid_t obj, const std::string& name, std::string_view value);  // UTF-8, variable length
 bool has_attr(hid_t obj, const std::string& name);
+// The same on the dataset `dataset` under `loc` (opened by name for the call).
+void set_dataset_attr_string(hid_t loc, const std::string& dataset, const std::string& name, std::string_view value);
+std::string get_dataset_attr_string(hid_t loc, const std::string& dataset, const std::string& name);
 double get_attr_double(hid_t obj, const std::string& name);       // any numeric attribute
 std::int64_t get_attr_int64(hid_t obj, const std::string& name);  // integer attributes only
 std::string get_attr_string(hid_t obj, const std::string& name);  // fixed or variable length

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "io/atomic_file.hpp"
+#include "io/dataset_docs.hpp"
 
 namespace orogen {
 namespace {
@@ -35,7 +36,7 @@ void validate(const SnapshotFrame& f) {
     if (name == "step" || name == "time") throw std::invalid_argument("snapshot attribute name '" + name + "' is reserved");
   }
   std::vector<std::string> seen;
-  for (const auto& [name, values] : f.fields) {
+  for (const auto& [name, values, units, description] : f.fields) {
     if (name.empty() || is_disc_array(name) || name == "walls" || name.find('/') != std::string::npos)
       throw std::invalid_argument("snapshot field name '" + name + "' is reserved or invalid");
     if (std::find(seen.begin(), seen.end(), name) != seen.end())
@@ -43,7 +44,17 @@ void validate(const SnapshotFrame& f) {
     seen.push_back(name);
     if (values.size() != n)
       throw std::invalid_argument(fmt::format("snapshot field '{}' has {} values for {} discs", name, values.size(), n));
+    if (units.empty() || description.empty())
+      throw std::invalid_argument("snapshot field '" + name + "' has no units or no description");
   }
+}
+
+// Stores the units and description of one of the writer's own datasets (dataset_docs.cpp).
+void document(hid_t group, std::string_view name) {
+  const DatasetDoc* doc = find_dataset_doc(name);
+  if (doc == nullptr) throw std::logic_error("snapshot dataset '" + std::string(name) + "' has no entry in dataset_docs.cpp");
+  h5::set_dataset_attr_string(group, std::string(name), kUnitsAttr, doc->units);
+  h5::set_dataset_attr_string(group, std::string(name), kDescriptionAttr, doc->description);
 }
 
 void write_group(hid_t group, const SnapshotFrame& f, h5::WriteOptions storage) {
@@ -54,15 +65,21 @@ void write_group(hid_t group, const SnapshotFrame& f, h5::WriteOptions storage) 
     if (v.size() != f.discs->size())
       throw std::invalid_argument(fmt::format("Discs::{} has {} entries for {} discs", name, v.size(), f.discs->size()));
     h5::write(group, std::string(name), std::span(v), storage);
+    document(group, name);
     ++written;
   });
   if (written != kSnapshotDiscArrays.size())
     throw std::logic_error("Discs lacks an array that snapshots store; update kSnapshotDiscArrays");
-  for (const auto& [name, values] : f.fields) h5::write(group, name, std::span(values), storage);
+  for (const auto& field : f.fields) {
+    h5::write(group, field.name, std::span(field.values), storage);
+    h5::set_dataset_attr_string(group, field.name, kUnitsAttr, field.units);
+    h5::set_dataset_attr_string(group, field.name, kDescriptionAttr, field.description);
+  }
 
   std::vector<double> walls;
   for (const auto& w : f.walls) walls.insert(walls.end(), w.begin(), w.end());
   h5::write_2d(group, "walls", walls, f.walls.size(), 4);
+  document(group, "walls");
 
   h5::set_attr_int64(group, "step", f.step);
   h5::set_attr_double(group, "time", f.time);
@@ -129,6 +146,7 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path path, const SnapshotMetadat
   remove_data_beyond(path_, 0);
   std::filesystem::create_directories(data_folder(path_));
   write_index();
+  write_xdmf(xdmf_sidecar(path_), xdmf_);
 }
 
 SnapshotWriter SnapshotWriter::reopen(std::filesystem::path path, std::int64_t keep, h5::WriteOptions storage) {
@@ -152,6 +170,12 @@ SnapshotWriter SnapshotWriter::reopen(std::filesystem::path path, std::int64_t k
   SnapshotWriter w(std::move(path), std::move(meta), keep, storage);
   w.write_index();  // uncount first, then delete what lies beyond
   remove_data_beyond(w.path_, keep);
+  for (std::int64_t k = 0; k < keep; ++k) {
+    const std::string file = output_file(w.path_, k).string();
+    h5::File f = h5::File::open(w.path_.parent_path() / file, h5::File::Mode::ReadOnly);
+    w.xdmf_.push_back(describe_xdmf_output(f.id(), file, "/"));
+  }
+  write_xdmf(xdmf_sidecar(w.path_), w.xdmf_);
   return w;
 }
 
@@ -168,9 +192,23 @@ void SnapshotWriter::append(const SnapshotFrame& frame) {
   {
     h5::File f = h5::File::create_in_memory();
     write_group(f.id(), frame, storage_);
+    // Each output file carries the configuration too, so that one copied alone says what it is.
+    if (const auto it = meta_.strings.find(kConfigAttr); it != meta_.strings.end())
+      h5::set_attr_string(f.id(), kConfigAttr, it->second);
+    XdmfOutput listed = describe_xdmf_output(f.id(), output_file(path_, count_).string(), "/");
     write_file_atomically(path_.parent_path() / output_file(path_, count_), f.image());
+    xdmf_.push_back(std::move(listed));  // only once the file is there
   }
   ++count_;
+  write_index();
+  write_xdmf(xdmf_sidecar(path_), xdmf_);
+}
+
+void SnapshotWriter::set_metadata_string(const std::string& name, const std::string& value) {
+  SnapshotMetadata m = meta_;
+  m.strings[name] = value;
+  check_metadata(m);
+  meta_ = std::move(m);
   write_index();
 }
 
@@ -180,12 +218,17 @@ void write_single_snapshot(const std::filesystem::path& path, const SnapshotMeta
   validate(frame);
   h5::File f = h5::File::create_in_memory();
   write_root_attrs(f.id(), meta, 1);
+  XdmfOutput xdmf;
   {
     h5::Group g = h5::Group::create(f.id(), snapshot_group_name(0));
     write_group(g.id(), frame, storage);
+    std::string group_path("/");  // built piecewise: GCC 12 warns falsely on "/" + std::string
+    group_path.append(snapshot_group_name(0)).append("/");
+    xdmf = describe_xdmf_output(g.id(), path.filename().string(), group_path);
     g.close();
   }
   write_file_atomically(path, f.image());
+  write_xdmf(xdmf_sidecar(path), {xdmf});
 }
 
 SnapshotMetadata read_snapshot_metadata(const std::filesystem::path& path) {

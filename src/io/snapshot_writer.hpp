@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "io/hdf5_file.hpp"
+#include "io/snapshot_field.hpp"
+#include "io/xdmf_writer.hpp"
 #include "particles/discs.hpp"
 
 namespace orogen {
@@ -24,11 +26,12 @@ struct SnapshotFrame {
   double time = 0;
   std::map<std::string, double> attrs;  // extra scalars stored on the group (e.g. "S")
   const Discs* discs = nullptr;
-  std::vector<std::pair<std::string, std::vector<double>>> fields;  // extra per-disc fields
+  std::vector<SnapshotField> fields;                                 // extra per-disc fields
   std::vector<std::array<double, 4>> walls;                          // ax, ay, bx, by
 };
 
-// Caller metadata stored as root attributes (parameters, version strings, ...).
+// Caller metadata stored as root attributes (parameters, version strings, ...). The string
+// kConfigAttr (the resolved configuration's TOML) is also stored on every output file.
 struct SnapshotMetadata {
   std::map<std::string, double> numbers;
   std::map<std::string, std::string> strings;
@@ -36,6 +39,7 @@ struct SnapshotMetadata {
 
 inline constexpr const char* kSnapshotFormat = "orogen-snapshots";
 inline constexpr std::int64_t kSnapshotVersion = 1;
+inline constexpr const char* kConfigAttr = "config_toml";
 
 // The per-disc arrays of Discs that a snapshot stores (forces and internals are left out).
 inline constexpr std::array<const char*, 13> kSnapshotDiscArrays = {
@@ -61,6 +65,10 @@ class SnapshotWriter {
   // Writes output count() as its own file, then the index that counts it.
   void append(const SnapshotFrame& frame);
 
+  // Replaces one string of the metadata and rewrites the index (a resume that extends a run
+  // stores its new configuration; outputs already written keep theirs).
+  void set_metadata_string(const std::string& name, const std::string& value);
+
   std::int64_t count() const { return count_; }
   const std::filesystem::path& path() const { return path_; }
 
@@ -68,6 +76,7 @@ class SnapshotWriter {
   SnapshotWriter(std::filesystem::path path, SnapshotMetadata meta, std::int64_t count, h5::WriteOptions storage);
   void write_index() const;
   std::filesystem::path path_;
+  std::vector<XdmfOutput> xdmf_;  // the sidecar's outputs (snapshots.xmf)
   SnapshotMetadata meta_;
   std::int64_t count_ = 0;
   h5::WriteOptions storage_;
@@ -77,7 +86,8 @@ class SnapshotWriter {
 std::filesystem::path data_folder(const std::filesystem::path& index);
 
 // A self-contained file holding one output (packing.h5): no data folder, so it can be copied
-// alone. Readers see the same layout as an index with one output.
+// alone. Readers see the same layout as an index with one output. An XDMF sidecar
+// (packing.xmf) is written beside it.
 void write_single_snapshot(const std::filesystem::path& path, const SnapshotMetadata& meta, const SnapshotFrame& frame,
                            h5::WriteOptions storage = {.deflate = 1});
 

@@ -7,12 +7,14 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
 
 #include "io/atomic_file.hpp"
+#include "io/wall_display.hpp"
 
 namespace orogen {
 namespace {
@@ -122,15 +124,28 @@ std::string attribute(std::string_view tag, std::string_view name) {
   return xml_unescape(tag.substr(begin, end - begin));
 }
 
+// A per-disc array followed by `pad` copies of `fill`: the wall end points are points too, and
+// every point array needs a value for them.
+template <class T>
+std::vector<T> padded(const std::vector<T>& v, std::size_t pad, T fill) {
+  std::vector<T> out(v);
+  out.insert(out.end(), pad, fill);
+  return out;
+}
+
 }  // namespace
 
 void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame) {
   if (frame.discs == nullptr) throw std::invalid_argument("vtp frame has no discs");
   const Discs& d = *frame.discs;
   const std::size_t n = d.size();
-  for (const auto& [name, values] : frame.fields)
-    if (values.size() != n)
-      throw std::invalid_argument(fmt::format("vtp field '{}' has {} values for {} discs", name, values.size(), n));
+  for (const auto& field : frame.fields)
+    if (field.values.size() != n)
+      throw std::invalid_argument(
+          fmt::format("vtp field '{}' has {} values for {} discs", field.name, field.values.size(), n));
+  const auto walls = walls_for_display(frame.walls, d.x, d.y);
+  const std::size_t n_walls = walls.size(), pad = 2 * n_walls;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
   std::string out;
   out += "<?xml version=\"1.0\"?>\n";
@@ -149,27 +164,30 @@ void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame) {
         xml_escape(name), value);
   out += "    </FieldData>\n";
   out += fmt::format(
-      "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" NumberOfStrips=\"0\" "
+      "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"{}\" NumberOfStrips=\"0\" "
       "NumberOfPolys=\"0\">\n",
-      n);
+      n + pad, n, n_walls);
 
+  // Wall end points: radius 0 (no glyph), id and cluster_id -1, kinematic, at rest, NaN fields.
   out += "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n";
-  data_array<double>(out, "radius", d.radius);
-  data_array<std::int64_t>(out, "id", d.id);
-  data_array<std::int64_t>(out, "cluster_id", d.cluster_id);
-  data_array<std::uint8_t>(out, "motion", d.motion);
-  data_array<double>(out, "velocity", with_zero_z(d.vx, d.vy), 3);
-  data_array<double>(out, "omega", d.omega);
-  data_array<double>(out, "theta", d.theta);
-  data_array<double>(out, "depth0", d.depth0);
-  for (const auto& [name, values] : frame.fields) data_array<double>(out, name, values);
+  data_array<double>(out, "radius", padded(d.radius, pad, 0.0));
+  data_array<std::int64_t>(out, "id", padded(d.id, pad, std::int64_t{-1}));
+  data_array<std::int64_t>(out, "cluster_id", padded(d.cluster_id, pad, std::int64_t{-1}));
+  data_array<std::uint8_t>(out, "motion", padded(d.motion, pad, std::uint8_t{1}));
+  data_array<double>(out, "velocity", padded(with_zero_z(d.vx, d.vy), 3 * pad, 0.0), 3);
+  data_array<double>(out, "omega", padded(d.omega, pad, 0.0));
+  data_array<double>(out, "theta", padded(d.theta, pad, 0.0));
+  data_array<double>(out, "depth0", padded(d.depth0, pad, kNaN));
+  for (const auto& field : frame.fields) data_array<double>(out, field.name, padded(field.values, pad, kNaN));
   out += "      </PointData>\n";
 
+  std::vector<double> points = with_zero_z(d.x, d.y);
+  for (const auto& w : walls) points.insert(points.end(), {w[0], w[1], 0.0, w[2], w[3], 0.0});
   out += "      <Points>\n";
-  data_array<double>(out, "Points", with_zero_z(d.x, d.y), 3);
+  data_array<double>(out, "Points", points, 3);
   out += "      </Points>\n";
 
-  // One vertex cell per point: connectivity 0..n-1, offsets 1..n.
+  // One vertex cell per disc: connectivity 0..n-1, offsets 1..n.
   std::vector<std::int64_t> connectivity(n), offsets(n);
   for (std::size_t i = 0; i < n; ++i) {
     connectivity[i] = static_cast<std::int64_t>(i);
@@ -179,6 +197,14 @@ void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame) {
   data_array<std::int64_t>(out, "connectivity", connectivity);
   data_array<std::int64_t>(out, "offsets", offsets);
   out += "      </Verts>\n";
+  // One line cell per wall, between its two end points after the discs.
+  std::vector<std::int64_t> line_points(pad), line_offsets(n_walls);
+  for (std::size_t k = 0; k < pad; ++k) line_points[k] = static_cast<std::int64_t>(n + k);
+  for (std::size_t w = 0; w < n_walls; ++w) line_offsets[w] = static_cast<std::int64_t>(2 * (w + 1));
+  out += "      <Lines>\n";
+  data_array<std::int64_t>(out, "connectivity", line_points);
+  data_array<std::int64_t>(out, "offsets", line_offsets);
+  out += "      </Lines>\n";
   out += "    </Piece>\n";
   out += "  </PolyData>\n";
   out += "</VTKFile>\n";

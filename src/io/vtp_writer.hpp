@@ -15,7 +15,9 @@ namespace orogen {
 // Discs become points (x, y, 0) with one vertex cell each, so ParaView can draw them as
 // points or as glyphs scaled by `radius`. Point data: radius, id, cluster_id, motion,
 // velocity (vx, vy, 0), omega, theta, depth0 and the frame's extra fields; field data:
-// TimeValue, step and the frame's scalar attrs.
+// TimeValue, step and the frame's scalar attrs. The walls, clipped around the discs
+// (wall_display.hpp), follow the discs as two points each (radius 0, id -1, NaN fields)
+// joined by one line cell per wall.
 void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame);
 
 // `entries` are (time, file name relative to the .pvd's directory), in output order.

@@ -9,9 +9,15 @@ namespace orogen {
 void write_removal_log(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals) {
   static constexpr const char* kReasons[] = {"left_domain", "eroded", "other"};
   std::string text =
-      "# particles removed from the model, one row each\n"
-      "# step: time step of the removal; time: model time; id: disc id; cluster_id: -1 for a free disc\n"
-      "# x, y: position when removed [d]; reason: left_domain, eroded or other (trimming a packing)\n"
+      "# particles removed from the model, one row each; lengths in d (model coordinates, not h0 from the "
+      "S-point as in a wedge's series.csv)\n"
+      "# step: time step of the removal [-]\n"
+      "# time: model time of the removal [sqrt(d/g)]\n"
+      "# id: stable disc id [-]\n"
+      "# cluster_id: stable id of the disc's cluster, -1 for a free disc [-]\n"
+      "# x: disc centre when removed, horizontal [d]\n"
+      "# y: disc centre when removed, vertical [d]\n"
+      "# reason: left_domain, eroded or other (trimming a packing) [-]\n"
       "step,time,id,cluster_id,x,y,reason\n";
   for (const auto& r : removals)
     text += fmt::format("{},{},{},{},{},{},{}\n", r.step, r.time, r.id, r.cluster_id, r.x, r.y,

@@ -22,9 +22,10 @@ namespace orogen {
 namespace {
 
 // Everything a run writes into its folder besides config.toml and run.lock.
-constexpr std::array<const char*, 11> kRunOutputs = {"checkpoint.bin", "snapshots.h5", "snapshots",   "series.csv",
-                                                     "removals.csv",   "summary.csv",  "run.pvd",     "vtp",
-                                                     "packing.h5",     "profile.csv",  "run.log"};
+constexpr std::array<const char*, 13> kRunOutputs = {"checkpoint.bin", "snapshots.h5", "snapshots",    "series.csv",
+                                                     "removals.csv",   "summary.csv",  "run.pvd",      "vtp",
+                                                     "packing.h5",     "profile.csv",  "run.log",      "snapshots.xmf",
+                                                     "packing.xmf"};
 
 // Keys that change how fast or how visibly a run goes, never what it computes.
 constexpr std::array<std::string_view, 6> kKeysOutsideIdentity = {"run.threads",     "run.adapt_threads",

@@ -104,6 +104,7 @@ class Run {
   // again by the resumed run.
   void reopen_outputs() {
     snapshots_.emplace(SnapshotWriter::reopen(dir_ / "snapshots.h5", state_.outputs));
+    snapshots_->set_metadata_string(kConfigAttr, config_.to_toml());  // an extension's new end
     series_.emplace(CsvSeries::load(dir_ / "series.csv"));
     if (series_->rows().size() < static_cast<std::size_t>(state_.outputs))
       throw RunFolderError(fmt::format("{} has {} rows but the checkpoint counts {} outputs: the files are not of "
@@ -184,6 +185,7 @@ class Run {
     m.numbers["dt"] = world_.dt;
     m.numbers["x_split"] = exp_->x_split();
     m.strings["run_identity"] = identity_;
+    m.strings[kConfigAttr] = config_.to_toml();
     return m;
   }
 
@@ -196,7 +198,9 @@ class Run {
   std::vector<std::string> preamble() const {
     return {fmt::format("Orogen {} series, experiment '{}': one row per output step", OROGEN_VERSION,
                         config_.get_string("run.experiment")),
-            "lengths in units of the largest disc diameter d, time in sqrt(d/g), unless a column says otherwise"};
+            "lengths in units of the largest disc diameter d, time in sqrt(d/g); each column's unit in [] after its "
+            "description",
+            fmt::format("h0 = {} d (the layer thickness; the unit of a wedge's lengths)", exp_->h0())};
   }
 
   void output() {

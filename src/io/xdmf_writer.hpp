@@ -1,0 +1,44 @@
+#pragma once
+// XDMF (version 2) sidecars that let ParaView and VisIt open Orogen's HDF5 snapshots with their
+// stock XDMF readers: a temporal collection with, per output, the discs as a point set
+// (Polyvertex, every per-disc dataset an attribute, pointing straight at the datasets of that
+// output's HDF5 file) and the walls as line cells, clipped around the discs and written inline
+// (docs/output-files.md).
+#include <hdf5.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace orogen {
+
+struct XdmfArray {
+  std::string name;         // dataset name
+  std::string number_type;  // XDMF NumberType: Float, Int, UInt, Char, UChar
+  std::size_t precision = 8;
+};
+
+// One output as the sidecar lists it.
+struct XdmfOutput {
+  std::string file;   // the HDF5 file, relative to the sidecar's folder
+  std::string group;  // the output's group in that file, ending in '/': "/" or "/output_000000/"
+  double time = 0;
+  std::size_t n_discs = 0;
+  std::vector<std::array<double, 4>> walls;  // clipped for display (wall_display.hpp), written inline
+  std::vector<XdmfArray> arrays;  // the 1-D per-disc datasets, in name order
+};
+
+// Reads what the sidecar needs from an output's group (its `time` attribute, `x`, `y` and
+// `walls`, and every 1-D dataset with one value per disc).
+XdmfOutput describe_xdmf_output(hid_t group, std::string file, std::string group_path);
+
+// Writes the sidecar (atomically): one temporal collection of the outputs, in order.
+void write_xdmf(const std::filesystem::path& path, const std::vector<XdmfOutput>& outputs);
+
+// "snapshots.xmf" beside "snapshots.h5".
+std::filesystem::path xdmf_sidecar(const std::filesystem::path& h5_file);
+
+}  // namespace orogen

@@ -1,0 +1,185 @@
+"""docs/output-files.md matches the files (issue 18): a small wedge run and a small packing run,
+then their HDF5 datasets (names, units, descriptions, types) and CSV columns (names, the
+`# name: meaning [unit]` lines) are compared with the doc's tables, both ways; every dataset has
+a non-empty `units` and `description`, every file the resolved configuration, and every file in
+the run folders is named in the doc's run-folder table.
+
+Run from the repository root, with OROGEN_BINARY naming the orogen program:
+    OROGEN_BINARY=build/release/orogen /usr/bin/python3 -m unittest tests/python/test_output_docs.py
+"""
+
+import csv
+import glob
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+import h5py
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DOC = os.path.join(REPO, "docs", "output-files.md")
+BINARY = os.environ.get("OROGEN_BINARY", os.path.join(REPO, "build", "release", "orogen"))
+COMMON = ["--set", "output.progress=never", "--threads", "1"]
+RUNS = {
+    "wedge": ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
+              "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
+              "--set", "wedge.outputs=4", "--set", "wedge.erosion_height=0.9"],
+    "packing": ["--set", "run.experiment=packing", "--set", "particles.packing=random_discs",
+                "--set", "layer.length=10", "--set", "layer.thickness=3", "--set", "contact.kn=1000",
+                "--set", "settle.relax_time=1", "--set", "settle.ke_threshold=1e-3", "--set", "output.interval=2"],
+}
+
+
+def read_text(path):
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def cells(line):
+    return [c.strip() for c in line.strip().strip("|").split("|")]
+
+
+def unquote(cell):
+    return cell.strip().strip("`")
+
+
+def doc_tables():
+    """[(heading, header cells, rows of cells)] of every Markdown table, with the heading above it."""
+    tables, heading, rows, header = [], "", None, None
+    for line in read_text(DOC).splitlines(keepends=True):
+        if line.startswith("#"):
+            heading = line.strip("# \n")
+        if line.startswith("|"):
+            if header is None:
+                header, rows = cells(line), []
+            elif not set(line.strip()) <= set("|-: "):
+                rows.append(cells(line))
+        elif header is not None:
+            tables.append((heading, header, rows))
+            header = None
+    if header is not None:
+        tables.append((heading, header, rows))
+    return tables
+
+
+def documented_columns(csv_name, experiment):
+    """{column: meaning} of the doc's table for `csv_name` of `experiment`, in order."""
+    for heading, header, rows in doc_tables():
+        m = re.match(r"`([a-z_]+\.csv)` columns, (\w+) experiment", heading)
+        if m and header[:2] == ["column", "meaning"] and m.group(1) == csv_name and m.group(2) in (experiment, "every"):
+            return {unquote(r[0]): r[1] for r in rows}
+    return None
+
+
+def documented_datasets(experiment):
+    """{dataset: (type, units, description)} the doc says `experiment` writes."""
+    for heading, header, rows in doc_tables():
+        if header == ["dataset", "type", "units", "written by", "description"]:
+            return {unquote(r[0]): (r[1], r[2], r[4]) for r in rows
+                    if r[3] == "every experiment" or experiment in [w.strip() for w in r[3].split(",")]}
+    raise AssertionError("docs/output-files.md has no table of datasets")
+
+
+def documented_run_files():
+    """Regular expressions of the file names in the doc's run-folder table."""
+    for heading, header, rows in doc_tables():
+        if heading == "The run folder":
+            names = [n for r in rows for n in re.findall(r"`([^`]+)`", r[0])]
+            return [re.compile(re.escape(n).replace("NNNNNN", r"\d{6}").replace(r"\*", r"[^/]*") + "$") for n in names]
+    raise AssertionError("docs/output-files.md has no run-folder table")
+
+
+def csv_columns(path):
+    """(header names, {name: meaning} of the `# name: meaning` lines) of an Orogen CSV file."""
+    comments, header = [], None
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("#"):
+                comments.append(line[2:].rstrip("\n"))
+            else:
+                header = next(csv.reader([line]))
+                break
+    meanings = {}
+    for c in comments:
+        name, sep, meaning = c.partition(": ")
+        if sep and name in header:
+            meanings[name] = meaning
+    return header, meanings
+
+
+def h5_type(ds):
+    dims = "[n]" if ds.ndim == 1 else "[n_walls, 4]" if ds.ndim == 2 else "?"
+    return "%s %s" % (ds.dtype.name, dims)
+
+
+class OutputFilesMatchTheirDoc(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="orogen_output_docs_")
+        cls.dirs = {}
+        for name, args in RUNS.items():
+            out = os.path.join(cls.tmp, name)
+            subprocess.run([BINARY, "run", "--out", out] + args + COMMON, check=True, capture_output=True)
+            cls.dirs[name] = out
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def check_group(self, group, experiment, where):
+        documented = documented_datasets(experiment)
+        written = {k: group[k] for k in group.keys()}
+        self.assertEqual(sorted(written), sorted(documented), "%s: written vs documented" % where)
+        for name, ds in written.items():
+            units, description = ds.attrs.get("units"), ds.attrs.get("description")
+            self.assertTrue(units and description, "%s/%s has no units or description" % (where, name))
+            if name in documented:
+                self.assertEqual((h5_type(ds), units, description), documented[name], "%s/%s" % (where, name))
+
+    def test_snapshot_datasets_match_the_doc(self):
+        for experiment, run in self.dirs.items():
+            files = sorted(glob.glob(os.path.join(run, "snapshots", "output_*.h5")))
+            self.assertGreaterEqual(len(files), 2)
+            config = read_text(os.path.join(run, "config.toml"))
+            for path in files:
+                with h5py.File(path, "r") as f:
+                    self.check_group(f, experiment, path)
+                    self.assertEqual(f.attrs["config_toml"], config, path)
+            with h5py.File(os.path.join(run, "snapshots.h5"), "r") as index:
+                self.assertEqual(index.attrs["config_toml"], config)
+                self.assertEqual(len(index.keys()), int(index.attrs["n_outputs"]))  # links only, no datasets
+                self.check_group(index["output_000000"], experiment, "snapshots.h5/output_000000")
+
+    def test_packing_file_matches_the_doc(self):
+        run = self.dirs["packing"]
+        with h5py.File(os.path.join(run, "packing.h5"), "r") as f:
+            self.assertEqual(list(f.keys()), ["output_000000"])
+            self.check_group(f["output_000000"], "packing", "packing.h5")
+            self.assertEqual(f.attrs["config_toml"], read_text(os.path.join(run, "config.toml")))
+
+    def test_csv_columns_match_the_doc(self):
+        for experiment, run in self.dirs.items():
+            for name in ("series.csv", "summary.csv", "removals.csv"):
+                with self.subTest(experiment=experiment, file=name):
+                    documented = documented_columns(name, experiment)
+                    self.assertIsNotNone(documented, "no table of %s for %s" % (name, experiment))
+                    header, meanings = csv_columns(os.path.join(run, name))
+                    self.assertEqual(header, list(documented))
+                    self.assertEqual(meanings, documented)
+                    for column, meaning in meanings.items():
+                        self.assertRegex(meaning, r" \[[^\]]+\]$", "%s: %s states no unit" % (name, column))
+
+    def test_every_file_of_a_run_is_documented(self):
+        patterns = documented_run_files()
+        for run in self.dirs.values():
+            for root, _, files in os.walk(run):
+                for f in files:
+                    rel = os.path.relpath(os.path.join(root, f), run)
+                    self.assertTrue(any(p.match(rel) for p in patterns), rel + " is not in the run-folder table")
+
+
+if __name__ == "__main__":
+    unittest.main()
