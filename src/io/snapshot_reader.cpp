@@ -37,7 +37,7 @@ Snapshot SnapshotReader::read(std::int64_t k) const {
       s.attrs[a.name] = h5::get_attr_double(g.id(), a.name);
 
   for (const auto& name : h5::list(g.id())) {
-    if (name == "walls") continue;
+    if (name == "walls" || h5::is_group(g.id(), name)) continue;  // extra groups: read by name
     const h5::DatasetInfo info = h5::dataset_info(g.id(), name);
     if (info.dims.size() != 1) continue;
     if (name == "id") s.id = h5::read<std::int64_t>(g.id(), name);

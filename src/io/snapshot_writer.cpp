@@ -44,6 +44,12 @@ void validate(const SnapshotFrame& f) {
     if (values.size() != n)
       throw std::invalid_argument(fmt::format("snapshot field '{}' has {} values for {} discs", name, values.size(), n));
   }
+  for (const auto& g : f.groups) {
+    validate_snapshot_group(g);
+    if (is_disc_array(g.name) || g.name == "walls" || std::find(seen.begin(), seen.end(), g.name) != seen.end())
+      throw std::invalid_argument("snapshot group name '" + g.name + "' is reserved or given twice");
+    seen.push_back(g.name);
+  }
 }
 
 void write_group(hid_t group, const SnapshotFrame& f, h5::WriteOptions storage) {
@@ -63,6 +69,7 @@ void write_group(hid_t group, const SnapshotFrame& f, h5::WriteOptions storage) 
   std::vector<double> walls;
   for (const auto& w : f.walls) walls.insert(walls.end(), w.begin(), w.end());
   h5::write_2d(group, "walls", walls, f.walls.size(), 4);
+  for (const auto& g : f.groups) write_snapshot_group(group, g, storage);
 
   h5::set_attr_int64(group, "step", f.step);
   h5::set_attr_double(group, "time", f.time);

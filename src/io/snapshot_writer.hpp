@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/hdf5_file.hpp"
+#include "io/snapshot_groups.hpp"
 #include "particles/discs.hpp"
 
 namespace orogen {
@@ -26,6 +27,7 @@ struct SnapshotFrame {
   const Discs* discs = nullptr;
   std::vector<std::pair<std::string, std::vector<double>>> fields;  // extra per-disc fields
   std::vector<std::array<double, 4>> walls;                          // ax, ay, bx, by
+  std::vector<SnapshotGroup> groups;  // extra groups beside the disc arrays (contacts, stress, ...)
 };
 
 // Caller metadata stored as root attributes (parameters, version strings, ...).
