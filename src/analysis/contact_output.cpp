@@ -90,7 +90,7 @@ SnapshotGroup grid_group(const StressGrid& s) {
                            "divided by the cell's area (voids included); rows y, columns x; component ";
   SnapshotGroup g{"stress_grid",
                   "stress on a regular grid of square cells; cell (row j, column i) covers [x0 + i cell, x0 + (i+1) "
-                  "cell) x [y0 + j cell, y0 + (j+1) cell)",
+                  "cell) x [y0 + j cell, y0 + (j+1) cell); attributes x0, y0, cell in d",
                   {{"cell", s.cell}, {"x0", s.x0}, {"y0", s.y0}},
                   {}};
   g.datasets.push_back(dataset("xx", kStressUnits, what + "xx", s.xx, s.nx));
