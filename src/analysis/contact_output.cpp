@@ -124,7 +124,8 @@ std::vector<SnapshotGroup> contact_output_groups(const World& world, const Conta
     }
     if (options.stress || options.stress_grid > 0) {
       const DiscStress stress = love_weber_stress(world.discs, contacts);
-      if (options.stress_grid > 0) groups.push_back(grid_group(coarse_grain_stress(world.discs, stress, options.stress_grid)));
+      if (options.stress_grid > 0)
+        groups.push_back(grid_group(coarse_grain_stress(world.discs, stress, options.stress_grid)));
       if (options.stress) groups.push_back(stress_group(stress));
     }
   }
