@@ -276,6 +276,40 @@ TEST(RenderField, ColormapOverGivenRangeWithColourBar) {
   EXPECT_NEAR(r.hi, robust_range(f.field).hi, 1e-12);
 }
 
+TEST(RenderForces, LinesWidthAndColourByNormalForce) {
+  TempDir dir;
+  const int cols = 20, rows = 10;
+  Frame f = hex_block(cols, rows);
+  auto line = [&](int i, int j, double fn) {
+    const std::size_t a = disc_at(cols, i, j), b = disc_at(cols, i + 1, j);
+    f.force_lines.push_back({f.x[a], f.y[a], f.x[b], f.y[b], fn});
+  };
+  line(5, 2, 10.0);
+  line(10, 4, 1.0);
+  line(14, 6, 2.0);
+  RenderOptions opt;
+  opt.width_px = 900;
+  opt.mode = ColorMode::Forces;
+  opt.colormap = Colormap::Force;
+  render_png(f, opt, dir.path() / "forces.png");
+  const Image img(dir.path() / "forces.png");
+  const FrameLayout L = compute_layout(f, opt);
+  // The strongest line: the top of the map, as wide as a disc radius (about 19 px here).
+  const auto& s = f.force_lines[0];
+  const double mx = L.px(0.5 * (s.ax + s.bx)), my = L.py(0.5 * (s.ay + s.by));
+  const Rgb top = colormap_sample(Colormap::Force, 1.0);
+  expect_near_color(img.at(mx, my), to8(top));
+  expect_near_color(img.at(mx, my + 0.3 * 0.5 * L.scale), to8(top));
+  // A disc away from every line is pale, and the colour bar shows the map.
+  expect_near_color(pixel_of_disc(img, L, f, disc_at(cols, 2, 8)), to8(Rgb{0.9, 0.9, 0.88}));
+  const double bar_x = L.plot_left + L.plot_width + 1.8 * L.font_px;
+  expect_near_color(img.at(bar_x, L.plot_top + 2), to8(top), 4);
+  const ValueRange r = force_range(f);
+  EXPECT_EQ(r.lo, 0.0);
+  EXPECT_GT(r.hi, 2.0);
+  EXPECT_LE(r.hi, 10.0);
+}
+
 TEST(RenderCluster, StableDistinctColours) {
   EXPECT_TRUE(same(cluster_color(42), cluster_color(42)));
   int distinct = 0;

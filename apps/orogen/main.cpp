@@ -41,7 +41,9 @@ int main(int argc, char** argv) {
   auto* render_cmd = app.add_subcommand("render", "draw the output steps of a run as PNG frames and an animation");
   render_cmd->add_option("dir", render_dir, "run folder")->required();
   render_cmd->add_option("--color", render.color,
-                         "horizons | cluster | field:NAME (field:max_rel_disp uses the hot colormap)")->capture_default_str();
+                         "horizons | cluster | forces | field:NAME (field:max_rel_disp uses the hot colormap; forces "
+                         "draws the contact forces of a run with output.contacts = true)")
+      ->capture_default_str();
   render_cmd->add_option("--width", render.width_px, "picture width in pixels")
       ->capture_default_str()
       ->check(not_empty);  // the range is checked by render_command, with the other options

@@ -172,6 +172,13 @@ const std::vector<KeySpec>& schema() {
       integer("output.checkpoint_every", 10, ge(0), le(1000000),
               "write a checkpoint every this many output steps, 0 = only at the end"),
       boolean("output.vtp", true, "write the .vtp series (run.pvd, vtp/); snapshots.xmf, always written, serves ParaView too"),
+      boolean("output.contacts", false,
+              "store each output's contacts with their forces (group `contacts` of the snapshot; needed by "
+              "`orogen render --color forces`)"),
+      boolean("output.stress", false, "store each output's Love-Weber stress per disc (group `stress`)"),
+      real("output.stress_grid", 0.0, ge(0), le(1e4),
+           "store each output's stress coarse-grained on square cells of this size (group `stress_grid`), "
+           "0 = none; else at least 0.5 [d]"),
       text("output.progress", "auto", {"auto", "always", "never"},
            "progress line: auto = only on a terminal"),
   };

@@ -57,6 +57,8 @@ double discrete_damping_ratio(double e, double omega0_dt);
 struct PairForce {
   double fx = 0, fy = 0;  // force on the second disc (the first feels minus this)
   double ft = 0;          // tangential force component (for the torques -r_i ft, -r_j ft)
+  double fn = 0;          // normal force component (along n, from i to j)
+  bool at_limit = false;  // the tangential force sat on the Coulomb limit
 };
 
 // Computes the force between discs i and j given their relative geometry and kinematics.
@@ -85,10 +87,12 @@ inline bool contact_force(double dx, double dy, double ri, double rj, double dvx
   xi += vt * dt;
   double ft = -ks * xi - gs * vt;
   const double limit = mu * fn;
-  if (std::fabs(ft) > limit) {
+  out.at_limit = std::fabs(ft) > limit;
+  if (out.at_limit) {
     ft = std::copysign(limit, ft);
     xi = -ft / ks;  // the spring sits on the Coulomb limit
   }
+  out.fn = fn;
   out.fx = fn * nx + ft * tx;
   out.fy = fn * ny + ft * ty;
   out.ft = ft;

@@ -301,6 +301,11 @@ void link_external(hid_t loc, const std::string& name, const std::string& file, 
         "cannot link " + quoted(name) + " to " + quoted(file));
 }
 
+bool is_group(hid_t loc, const std::string& name) {
+  Object obj(check_id(H5Oopen(loc, name.c_str(), H5P_DEFAULT), "cannot open " + quoted(name)), H5Oclose);
+  return H5Iget_type(obj.id()) == H5I_GROUP;
+}
+
 bool is_external_link(hid_t loc, const std::string& name) {
   H5L_info_t info;
   check(H5Lget_info(loc, name.c_str(), &info, H5P_DEFAULT), "cannot look up " + quoted(name));
@@ -341,6 +346,15 @@ void write(hid_t loc, const std::string& name, std::span<const std::uint8_t> v, 
 
 void write_2d(hid_t loc, const std::string& name, std::span<const double> v, std::size_t rows, std::size_t cols,
               WriteOptions opt) {
+  if (v.size() != rows * cols)
+    throw Error("HDF5: dataset " + quoted(name) + ": " + std::to_string(v.size()) + " values for a " +
+                std::to_string(rows) + " x " + std::to_string(cols) + " matrix");
+  const std::array<hsize_t, 2> dims{rows, cols};
+  write_nd(loc, name, v.data(), dims, opt);
+}
+
+void write_2d(hid_t loc, const std::string& name, std::span<const std::int64_t> v, std::size_t rows,
+              std::size_t cols, WriteOptions opt) {
   if (v.size() != rows * cols)
     throw Error("HDF5: dataset " + quoted(name) + ": " + std::to_string(v.size()) + " values for a " +
                 std::to_string(rows) + " x " + std::to_string(cols) + " matrix");

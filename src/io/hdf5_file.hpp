@@ -77,6 +77,7 @@ std::vector<std::string> list(hid_t loc);         // names in ascending name ord
 // directory of the file that holds the link (HDF5's rule), so a run folder can be moved whole.
 void link_external(hid_t loc, const std::string& name, const std::string& file, const std::string& object);
 bool is_external_link(hid_t loc, const std::string& name);
+bool is_group(hid_t loc, const std::string& name);  // false for a dataset
 
 // Dataset storage: 0 = contiguous; 1..9 = chunked with shuffle + deflate at that level.
 struct WriteOptions {
@@ -90,6 +91,8 @@ void write(hid_t loc, const std::string& name, std::span<const std::uint8_t> v, 
 // A rows x cols matrix of doubles stored row-major in `v`.
 void write_2d(hid_t loc, const std::string& name, std::span<const double> v, std::size_t rows, std::size_t cols,
               WriteOptions opt = {});
+void write_2d(hid_t loc, const std::string& name, std::span<const std::int64_t> v, std::size_t rows,
+              std::size_t cols, WriteOptions opt = {});
 
 // Reads a 1-D dataset of exactly the matching element type (bit-exact round trip).
 template <class T>

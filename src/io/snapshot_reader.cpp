@@ -25,6 +25,28 @@ SnapshotReader::SnapshotReader(const std::filesystem::path& path)
   meta_ = read_snapshot_metadata(path);
 }
 
+bool SnapshotReader::has_group(std::int64_t k, const std::string& group) const {
+  if (k < 0 || k >= count_)
+    throw std::out_of_range(fmt::format("'{}' has {} complete outputs, no output {}", path_.string(), count_, k));
+  h5::Group g = h5::Group::open(file_.id(), snapshot_group_name(k));
+  return h5::exists(g.id(), group) && h5::is_group(g.id(), group);
+}
+
+h5::Matrix SnapshotReader::read_group_dataset(std::int64_t k, const std::string& group, const std::string& name) const {
+  if (!has_group(k, group))
+    throw h5::Error(fmt::format("'{}' output {} has no group '{}'", path_.string(), k, group));
+  h5::Group out = h5::Group::open(file_.id(), snapshot_group_name(k));
+  h5::Group g = h5::Group::open(out.id(), group);
+  if (h5::dataset_info(g.id(), name).dims.size() == 1) {
+    h5::Matrix m;
+    m.data = h5::read<double>(g.id(), name);
+    m.rows = m.data.size();
+    m.cols = 1;
+    return m;
+  }
+  return h5::read_2d(g.id(), name);
+}
+
 Snapshot SnapshotReader::read(std::int64_t k) const {
   if (k < 0 || k >= count_)
     throw std::out_of_range(fmt::format("'{}' has {} complete outputs, no output {}", path_.string(), count_, k));
@@ -37,7 +59,7 @@ Snapshot SnapshotReader::read(std::int64_t k) const {
       s.attrs[a.name] = h5::get_attr_double(g.id(), a.name);
 
   for (const auto& name : h5::list(g.id())) {
-    if (name == "walls") continue;
+    if (name == "walls" || h5::is_group(g.id(), name)) continue;  // extra groups: read by name
     const h5::DatasetInfo info = h5::dataset_info(g.id(), name);
     if (info.dims.size() != 1) continue;
     if (name == "id") s.id = h5::read<std::int64_t>(g.id(), name);

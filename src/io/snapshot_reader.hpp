@@ -35,6 +35,10 @@ class SnapshotReader {
   std::int64_t count() const { return count_; }  // complete outputs (n_outputs)
   Snapshot read(std::int64_t k) const;           // 0 <= k < count()
   const SnapshotMetadata& metadata() const { return meta_; }
+  // The extra groups of output k (SnapshotFrame::groups): whether it has one, and a float
+  // dataset of it (1-D as rows x 1).
+  bool has_group(std::int64_t k, const std::string& group) const;
+  h5::Matrix read_group_dataset(std::int64_t k, const std::string& group, const std::string& name) const;
 
  private:
   std::filesystem::path path_;

@@ -47,6 +47,12 @@ void validate(const SnapshotFrame& f) {
     if (units.empty() || description.empty())
       throw std::invalid_argument("snapshot field '" + name + "' has no units or no description");
   }
+  for (const auto& g : f.groups) {
+    validate_snapshot_group(g);
+    if (is_disc_array(g.name) || g.name == "walls" || std::find(seen.begin(), seen.end(), g.name) != seen.end())
+      throw std::invalid_argument("snapshot group name '" + g.name + "' is reserved or given twice");
+    seen.push_back(g.name);
+  }
 }
 
 // Stores the units and description of one of the writer's own datasets (dataset_docs.cpp).
@@ -80,6 +86,7 @@ void write_group(hid_t group, const SnapshotFrame& f, h5::WriteOptions storage) 
   for (const auto& w : f.walls) walls.insert(walls.end(), w.begin(), w.end());
   h5::write_2d(group, "walls", walls, f.walls.size(), 4);
   document(group, "walls");
+  for (const auto& g : f.groups) write_snapshot_group(group, g, storage);
 
   h5::set_attr_int64(group, "step", f.step);
   h5::set_attr_double(group, "time", f.time);

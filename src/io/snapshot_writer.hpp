@@ -16,6 +16,7 @@
 #include "io/hdf5_file.hpp"
 #include "io/snapshot_field.hpp"
 #include "io/xdmf_writer.hpp"
+#include "io/snapshot_groups.hpp"
 #include "particles/discs.hpp"
 
 namespace orogen {
@@ -28,6 +29,7 @@ struct SnapshotFrame {
   const Discs* discs = nullptr;
   std::vector<SnapshotField> fields;                                 // extra per-disc fields
   std::vector<std::array<double, 4>> walls;                          // ax, ay, bx, by
+  std::vector<SnapshotGroup> groups;  // extra groups beside the disc arrays (contacts, stress, ...)
 };
 
 // Caller metadata stored as root attributes (parameters, version strings, ...). The string

@@ -72,6 +72,23 @@ void write_walls(std::string& out, const XdmfOutput& o) {
                      o.walls.size(), 2 * o.walls.size(), xy);
 }
 
+void write_contacts(std::string& out, const XdmfOutput& o) {
+  // Contact k is the line from point 2k to point 2k + 1 of contacts/segment_points (snapshot_groups).
+  const std::string c = std::to_string(o.n_contacts);
+  const std::string points = std::to_string(2 * o.n_contacts) + " 2";
+  out += fmt::format("        <Grid Name=\"contacts\" GridType=\"Uniform\">\n"
+                     "          <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\">\n"
+                     "            {}\n          </Topology>\n"
+                     "          <Geometry GeometryType=\"XY\">\n            {}\n          </Geometry>\n",
+                     c, hdf_item(o, "contacts/segment_cells", c + " 2", "Int", 8),
+                     hdf_item(o, "contacts/segment_points", points, "Float", 8));
+  for (const char* name : {"fn", "ft", "overlap"})
+    out += fmt::format("          <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+                       "            {}\n          </Attribute>\n",
+                       name, hdf_item(o, std::string("contacts/") + name, c, "Float", 8));
+  out += "        </Grid>\n";
+}
+
 }  // namespace
 
 XdmfOutput describe_xdmf_output(hid_t group, std::string file, std::string group_path) {
@@ -89,8 +106,12 @@ XdmfOutput describe_xdmf_output(hid_t group, std::string file, std::string group
       for (std::size_t r = 0; r < m.rows; ++r) std::copy_n(m.data.begin() + 4 * r, 4, walls[r].begin());
     o.walls = walls_for_display(walls, h5::read<double>(group, "x"), h5::read<double>(group, "y"));
   }
+  if (h5::exists(group, "contacts") && h5::is_group(group, "contacts")) {
+    const auto fn = h5::dataset_info(group, "contacts/fn");
+    if (fn.dims.size() == 1) o.n_contacts = fn.dims[0];
+  }
   for (const auto& name : h5::list(group)) {
-    if (name == "walls") continue;
+    if (name == "walls" || h5::is_group(group, name)) continue;  // extra groups: contacts below, others not shown
     const auto info = h5::dataset_info(group, name);
     const std::string type = number_type(info);
     if (info.dims.size() != 1 || info.dims[0] != o.n_discs || type.empty()) continue;
@@ -110,6 +131,7 @@ void write_xdmf(const std::filesystem::path& path, const std::vector<XdmfOutput>
                        o.time);
     if (o.n_discs > 0) write_discs(out, o);
     if (!o.walls.empty()) write_walls(out, o);
+    if (o.n_contacts > 0) write_contacts(out, o);
     out += "      </Grid>\n";
   }
   out += "    </Grid>\n  </Domain>\n</Xdmf>\n";

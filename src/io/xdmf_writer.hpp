@@ -2,7 +2,8 @@
 // XDMF (version 2) sidecars that let ParaView and VisIt open Orogen's HDF5 snapshots with their
 // stock XDMF readers: a temporal collection with, per output, the discs as a point set
 // (Polyvertex, every per-disc dataset an attribute, pointing straight at the datasets of that
-// output's HDF5 file) and the walls as line cells, clipped around the discs and written inline
+// output's HDF5 file), the walls as line cells, clipped around the discs and written inline, and,
+// where the output stored its contacts, the contacts as line cells coloured by their forces
 // (docs/output-files.md).
 #include <hdf5.h>
 
@@ -29,10 +30,11 @@ struct XdmfOutput {
   std::size_t n_discs = 0;
   std::vector<std::array<double, 4>> walls;  // clipped for display (wall_display.hpp), written inline
   std::vector<XdmfArray> arrays;  // the 1-D per-disc datasets, in name order
+  std::size_t n_contacts = 0;     // rows of the `contacts` group (output.contacts), 0 = none stored
 };
 
 // Reads what the sidecar needs from an output's group (its `time` attribute, `x`, `y` and
-// `walls`, and every 1-D dataset with one value per disc).
+// `walls`, every 1-D dataset with one value per disc, and the size of a `contacts` group).
 XdmfOutput describe_xdmf_output(hid_t group, std::string file, std::string group_path);
 
 // Writes the sidecar (atomically): one temporal collection of the outputs, in order.

@@ -31,6 +31,13 @@ constexpr std::array<Stop, 4> kHot{{
     {1.000, {1.0, 1.0, 1.0}},
 }};
 
+constexpr std::array<Stop, 4> kForce{{
+    {0.000, rgb8(250, 200, 120)},
+    {0.350, rgb8(235, 110, 40)},
+    {0.700, rgb8(170, 20, 20)},
+    {1.000, rgb8(30, 0, 0)},
+}};
+
 Rgb interpolate(std::span<const Stop> stops, double t) {
   t = std::clamp(t, 0.0, 1.0);
   std::size_t k = 1;
@@ -64,6 +71,7 @@ Rgb colormap_sample(Colormap map, double t) {
   if (std::isnan(t)) return {0.5, 0.5, 0.5};
   switch (map) {
     case Colormap::Hot: return interpolate(kHot, t);
+    case Colormap::Force: return interpolate(kForce, t);
     case Colormap::Viridis: break;
   }
   return interpolate(kViridis, t);

@@ -11,7 +11,8 @@ struct Rgb {
   double r = 0, g = 0, b = 0;
 };
 
-enum class Colormap { Viridis, Hot };
+// Force: pale orange -> red -> near black, for force lines over pale discs (strong = dark).
+enum class Colormap { Viridis, Hot, Force };
 
 // Colour at t in [0, 1] (clamped; NaN gives mid grey) by linear interpolation in a small table.
 Rgb colormap_sample(Colormap map, double t);

@@ -15,6 +15,12 @@ struct FrameWall {
   double ax = 0, ay = 0, bx = 0, by = 0;
 };
 
+// A contact drawn as a line from (ax, ay) to (bx, by) (centre to centre; a wall contact from
+// the contact point to the disc's centre) carrying the normal force fn.
+struct FrameForceLine {
+  double ax = 0, ay = 0, bx = 0, by = 0, fn = 0;
+};
+
 struct Frame {
   // Per disc (all the same length).
   std::vector<double> x, y, radius, theta;
@@ -30,6 +36,7 @@ struct Frame {
   std::vector<double> dx, dy;
 
   std::vector<FrameWall> walls;
+  std::vector<FrameForceLine> force_lines;  // ColorMode::Forces
 
   double time = 0;
   std::int64_t step = 0;

@@ -220,8 +220,35 @@ void draw_axes(cairo_t* cr, const Frame& f, const RenderOptions& opt, const Fram
   cairo_restore(cr);
 }
 
+// Force chains: each contact a line, the stronger ones drawn last (on top), wider and darker.
+// Width up to the mean disc radius on screen at the top of the range.
+void draw_force_lines(cairo_t* cr, const Frame& f, const RenderOptions& opt, const FrameLayout& L) {
+  if (opt.mode != ColorMode::Forces || f.force_lines.empty()) return;
+  const ValueRange r = force_range(f);
+  double mean_r = 0;
+  for (double v : f.radius) mean_r += v;
+  mean_r = f.size() ? mean_r / static_cast<double>(f.size()) : 0.5;
+  const double full_px = std::max(1.0, mean_r * L.scale);
+  std::vector<std::size_t> order(f.force_lines.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return f.force_lines[a].fn < f.force_lines[b].fn; });
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (const std::size_t k : order) {
+    const FrameForceLine& c = f.force_lines[k];
+    const double t = std::clamp((c.fn - r.lo) / (r.hi - r.lo), 0.0, 1.0);
+    if (!std::isfinite(t) || c.fn <= 0) continue;
+    cairo_move_to(cr, L.px(c.ax), L.py(c.ay));
+    cairo_line_to(cr, L.px(c.bx), L.py(c.by));
+    cairo_set_line_width(cr, std::max(0.5, t * full_px));
+    set_rgb(cr, colormap_sample(opt.colormap, t));
+    cairo_stroke(cr);
+  }
+}
+
 void draw_colorbar(cairo_t* cr, const Frame& f, const RenderOptions& opt, const FrameLayout& L) {
-  const ValueRange r = field_range(f, opt);
+  const bool forces = opt.mode == ColorMode::Forces;
+  const ValueRange r = forces ? force_range(f) : field_range(f, opt);
   const double fs = L.font_px;
   const double x = L.plot_left + L.plot_width + 1.2 * fs, w = 1.2 * fs;
   const double top = L.plot_top, h = L.plot_height;
@@ -250,7 +277,9 @@ void draw_colorbar(cairo_t* cr, const Frame& f, const RenderOptions& opt, const 
   cairo_translate(cr, L.width - 0.9 * fs, top + 0.5 * h);
   cairo_rotate(cr, -0.5 * std::numbers::pi);
   cairo_set_font_size(cr, 0.95 * fs);
-  show_text_at(cr, f.field_name.empty() ? std::string("field") : f.field_name, 0, 0, 0.5, 0.5);
+  const std::string label = forces ? std::string("normal force [m g]")
+                                   : (f.field_name.empty() ? std::string("field") : f.field_name);
+  show_text_at(cr, label, 0, 0, 0.5, 0.5);
   cairo_restore(cr);
 }
 
@@ -267,7 +296,8 @@ FrameLayout compute_layout(const Frame& f, const RenderOptions& opt) {
   const double top = opt.draw_title ? 2.4 * fs : 0.6 * fs;
   const double bottom = opt.draw_axes ? 3.4 * fs : 0.6 * fs;
   const double left = opt.draw_axes ? 4.6 * fs : 0.6 * fs;
-  const double right = opt.mode == ColorMode::Field ? 8.5 * fs : 1.2 * fs;
+  const bool bar = opt.mode == ColorMode::Field || opt.mode == ColorMode::Forces;
+  const double right = bar ? 8.5 * fs : 1.2 * fs;
   L.width = opt.width_px;
   L.plot_left = std::round(left);
   L.plot_top = std::round(top);
@@ -295,6 +325,16 @@ ValueRange field_range(const Frame& f, const RenderOptions& opt) {
   return r;
 }
 
+ValueRange force_range(const Frame& f) {
+  std::vector<double> fn;
+  fn.reserve(f.force_lines.size());
+  for (const auto& c : f.force_lines) fn.push_back(c.fn);
+  ValueRange r = robust_range(fn, 0.0, 99.0);
+  r.lo = 0.0;
+  if (!(r.hi > 0)) r.hi = 1.0;
+  return r;
+}
+
 std::vector<Rgb> disc_colors(const Frame& f, const RenderOptions& opt) {
   validate(f, opt);
   std::vector<Rgb> c(f.size());
@@ -315,6 +355,9 @@ std::vector<Rgb> disc_colors(const Frame& f, const RenderOptions& opt) {
     }
     case ColorMode::Cluster:
       for (std::size_t i = 0; i < f.size(); ++i) c[i] = cluster_color(f.cluster_id[i]);
+      break;
+    case ColorMode::Forces:
+      for (std::size_t i = 0; i < f.size(); ++i) c[i] = {0.9, 0.9, 0.88};
       break;
   }
   return c;
@@ -339,13 +382,14 @@ void render_png(const Frame& f, const RenderOptions& opt, const std::filesystem:
   cairo_rectangle(c, L.plot_left, L.plot_top, L.plot_width, L.plot_height);
   cairo_clip(c);
   draw_discs(c, f, opt, L);
+  draw_force_lines(c, f, opt, L);
   draw_walls(c, f, L);
   draw_arrows(c, f, opt, L);
   cairo_restore(c);
 
   if (opt.draw_title) draw_title(c, f, L);
   if (opt.draw_axes) draw_axes(c, f, opt, L);
-  if (opt.mode == ColorMode::Field) draw_colorbar(c, f, opt, L);
+  if (opt.mode == ColorMode::Field || opt.mode == ColorMode::Forces) draw_colorbar(c, f, opt, L);
 
   cairo_surface_flush(surface.get());
   std::filesystem::path tmp = png;

@@ -15,6 +15,7 @@ enum class ColorMode {
   Horizons,  // bands of initial depth (thesis Figs 4.5, 5.3), pro/retro shaded
   Field,     // Frame::field through a colormap, with a colour bar
   Cluster,   // one hashed colour per cluster id
+  Forces,    // pale discs under Frame::force_lines, width and colour by normal force, a colour bar
 };
 
 struct RenderOptions {
@@ -66,6 +67,9 @@ FrameLayout compute_layout(const Frame& frame, const RenderOptions& opt);
 
 // Colour range used in Field mode (options where given, else the robust percentile range).
 ValueRange field_range(const Frame& frame, const RenderOptions& opt);
+
+// Colour range of the force lines: 0 to the 99th percentile of fn.
+ValueRange force_range(const Frame& frame);
 
 // Fill colour of every disc under the options' colouring mode.
 std::vector<Rgb> disc_colors(const Frame& frame, const RenderOptions& opt);

@@ -124,8 +124,9 @@ RenderOptions color_options(const std::string& color, std::string& field) {
   RenderOptions ro;
   if (color == "horizons") ro.mode = ColorMode::Horizons;
   else if (color == "cluster") ro.mode = ColorMode::Cluster;
+  else if (color == "forces") { ro.mode = ColorMode::Forces; ro.colormap = Colormap::Force; }
   else if (color.rfind("field:", 0) == 0 && color.size() > 6) { ro.mode = ColorMode::Field; field = color.substr(6); }
-  else throw RenderError(2, fmt::format("--color '{}': allowed are horizons, cluster, field:NAME", color));
+  else throw RenderError(2, fmt::format("--color '{}': allowed are horizons, cluster, forces, field:NAME", color));
   if (field == kMaxRelDisp) {
     // Relative displacement of neighbours lights up active faults (thesis Fig 5.7): "hot" from
     // zero (at rest) to the frame's 99th percentile, so a few outliers do not wash it out.
@@ -197,6 +198,20 @@ void check_fields(const Snapshot& last, const fs::path& h5, const std::string& f
                                      h5.string(), names));
 }
 
+// Force lines of output k: its contacts' lines (segment_points) and normal forces.
+std::vector<FrameForceLine> force_lines(const SnapshotReader& reader, std::int64_t k) {
+  const h5::Matrix points = reader.read_group_dataset(k, "contacts", "segment_points");
+  const h5::Matrix fn = reader.read_group_dataset(k, "contacts", "fn");
+  if (points.cols != 2 || fn.cols != 1 || points.rows != 2 * fn.rows)
+    throw h5::Error(fmt::format("output {}: contacts/segment_points has {} x {} values for {} contacts", k,
+                                points.rows, points.cols, fn.rows));
+  std::vector<FrameForceLine> lines(fn.rows);
+  for (std::size_t c = 0; c < fn.rows; ++c)
+    lines[c] = {points.data[4 * c], points.data[4 * c + 1], points.data[4 * c + 2], points.data[4 * c + 3],
+                fn.data[c]};
+  return lines;
+}
+
 // The picture size the options give for this view, refused before any frame is drawn.
 void check_layout(const Frame& view, const RenderOptions& ro, const fs::path& h5) {
   if (!std::isfinite(view.x_min) || !std::isfinite(view.x_max) || !std::isfinite(view.y_min) ||
@@ -227,6 +242,11 @@ int render_checked(const RenderCommandOptions& o) {
     check_fields(reader->read(count - 1), h5, field, o.vectors);
     return 0;
   });
+  const bool forces = ro.mode == ColorMode::Forces;
+  if (forces && !reading(h5, [&] { return reader->has_group(count - 1, "contacts"); }))
+    throw RenderError(2, fmt::format("--color forces: {} holds no contact forces; run with output.contacts = true "
+                                     "(orogen run ... --set output.contacts=true)",
+                                     h5.string()));
   const auto& numbers = reader->metadata().numbers;
   const auto it = numbers.find("h0");
   const double h0 = it != numbers.end() ? it->second : 1.0;
@@ -241,6 +261,9 @@ int render_checked(const RenderCommandOptions& o) {
   int n = 0;
   for (std::int64_t k = 0; k < count; k += o.every) {
     Frame f = reading(h5, [&] { return frame_from_snapshot(reader->read(k), h0, field, o.vectors); });
+    // An output written before the run stored contacts (none in a run that writes them) is drawn without.
+    if (forces && reading(h5, [&] { return reader->has_group(k, "contacts"); }))
+      f.force_lines = reading(h5, [&] { return force_lines(*reader, k); });
     f.x_min = view.x_min; f.x_max = view.x_max; f.y_min = view.y_min; f.y_max = view.y_max;
     f.title = (o.dir.has_filename() ? o.dir : o.dir.parent_path()).filename().string();
     if (o.vectors)

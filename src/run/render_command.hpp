@@ -2,7 +2,8 @@
 // `orogen render DIR`: draws every output step of a run as a PNG frame and assembles an
 // animation (MP4 and GIF). Optionally overlays each disc's displacement over the last three
 // outputs as arrows (thesis Fig 5.11); `--color field:max_rel_disp` draws the maximum relative
-// displacement of neighbours (Fig 5.7) with the "hot" colormap from 0 to its 99th percentile.
+// displacement of neighbours (Fig 5.7) with the "hot" colormap from 0 to its 99th percentile;
+// `--color forces` draws force chains: each contact a line, wider and darker with its normal force.
 #include <filesystem>
 #include <string>
 
@@ -10,7 +11,7 @@ namespace orogen {
 
 struct RenderCommandOptions {
   std::filesystem::path dir;
-  std::string color = "horizons";  // horizons | cluster | field:NAME
+  std::string color = "horizons";  // horizons | cluster | forces | field:NAME
   int width_px = 1600;
   int every = 1;                   // draw every n-th output
   std::string frames_name = "frames";  // subfolder of the frames; the animation is named after it

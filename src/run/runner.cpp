@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "analysis/contact_output.hpp"
 #include "config/config.hpp"
 #include "experiments/experiment.hpp"
 #include "io/atomic_file.hpp"
@@ -42,6 +43,16 @@ struct RunState {
   bool finished = false;
 };
 
+ContactOutputOptions contact_output_options(const Config& config) {
+  ContactOutputOptions o{config.get_bool("output.contacts"), config.get_bool("output.stress"),
+                         config.get_float("output.stress_grid")};
+  // A finer grid than half a disc holds no more than one disc per cell, and a tiny one no memory.
+  if (o.stress_grid > 0 && o.stress_grid < 0.5)
+    throw config_error(config.source_of("output.stress_grid"), "output.stress_grid", fmt::format("{}", o.stress_grid),
+                       "must be 0 (no grid) or at least 0.5 (cell size in d)");
+  return o;
+}
+
 std::string vtp_name(std::int64_t k) { return fmt::format("vtp/output_{:06d}.vtp", k); }
 
 std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir) {
@@ -60,7 +71,8 @@ class Run {
       : config_(config), dir_(std::move(dir)), exp_(std::move(experiment)),
         interval_(exp_->output_interval().value_or(config.get_float("output.interval"))),
         checkpoint_every_(config.get_int("output.checkpoint_every")),
-        write_vtp_(config.get_bool("output.vtp")), identity_(run_identity(config)) {}
+        write_vtp_(config.get_bool("output.vtp")), contact_output_(contact_output_options(config)),
+        identity_(run_identity(config)) {}
 
   // Builds the initial state and writes nothing, so that errors found here (time.dt above the
   // stability limit) leave no files behind.
@@ -212,6 +224,7 @@ class Run {
     frame.fields = exp_->fields(world_);
     for (const auto& w : world_.walls)
       if (w.enabled) frame.walls.push_back({w.ax, w.ay, w.bx, w.by});
+    frame.groups = contact_output_groups(world_, contact_output_);
     snapshots_->append(frame);
     if (write_vtp_) {
       write_vtp(dir_ / vtp_name(state_.outputs), frame);
@@ -299,6 +312,7 @@ class Run {
   double interval_;
   std::int64_t checkpoint_every_;
   bool write_vtp_;
+  ContactOutputOptions contact_output_;
   std::string identity_;
   std::string checkpoint_config_;  // the configuration the loaded checkpoint was written with
   std::uint64_t last_output_step_ = 0;

@@ -27,12 +27,13 @@ def blocks(data):
 
 
 def describe(ds):
-    pd = ds.GetPointData()
+    pd, cd = ds.GetPointData(), ds.GetCellData()
     return {
         "points": ds.GetNumberOfPoints(),
         "cells": ds.GetNumberOfCells(),
         "cell_types": sorted({ds.GetCellType(i) for i in range(ds.GetNumberOfCells())}),
         "arrays": sorted(pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays())),
+        "cell_arrays": sorted(cd.GetArrayName(i) for i in range(cd.GetNumberOfArrays())),
         "bounds": list(ds.GetBounds()),
     }
 

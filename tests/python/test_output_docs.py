@@ -26,7 +26,8 @@ COMMON = ["--set", "output.progress=never", "--threads", "1"]
 RUNS = {
     "wedge": ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
               "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
-              "--set", "wedge.outputs=4", "--set", "wedge.erosion_height=0.9"],
+              "--set", "wedge.outputs=4", "--set", "wedge.erosion_height=0.9",
+              "--set", "output.contacts=true", "--set", "output.stress=true", "--set", "output.stress_grid=2"],
     "packing": ["--set", "run.experiment=packing", "--set", "particles.packing=random_discs",
                 "--set", "layer.length=10", "--set", "layer.thickness=3", "--set", "contact.kn=1000",
                 "--set", "settle.relax_time=1", "--set", "settle.ke_threshold=1e-3", "--set", "output.interval=2"],
@@ -83,6 +84,33 @@ def documented_datasets(experiment):
     raise AssertionError("docs/output-files.md has no table of datasets")
 
 
+GROUPS_HEADING = "Contacts, stress and cluster poses"
+
+
+def documented_groups():
+    """{group: {dataset names}} of the optional output groups (`contacts/`, `stress/`, ...): the
+    backquoted names in each group's paragraph (and table) of the doc's section on them."""
+    text = read_text(DOC)
+    section = text[text.index("### " + GROUPS_HEADING):]
+    section = section[:section.index("\n#", 1)]
+    groups, current = {}, None
+    for line in section.splitlines():
+        m = re.match(r"`([a-z_]+)/`", line)
+        if m:
+            current = groups.setdefault(m.group(1), set())
+        if current is not None:
+            current.update(re.findall(r"`([a-z_]+)`", line))
+    return groups
+
+
+def documented_group_table():
+    """{dataset: (type with its dimension letters, units)} of the contacts table."""
+    for heading, header, rows in doc_tables():
+        if heading.startswith(GROUPS_HEADING) and header == ["dataset", "type", "units", "meaning"]:
+            return {name: (r[1], r[2]) for r in rows for name in re.findall(r"`([a-z_]+)`", r[0])}
+    raise AssertionError("docs/output-files.md has no table of contact datasets")
+
+
 def documented_run_files():
     """Regular expressions of the file names in the doc's run-folder table."""
     for heading, header, rows in doc_tables():
@@ -131,15 +159,35 @@ class OutputFilesMatchTheirDoc(unittest.TestCase):
 
     def check_group(self, group, experiment, where):
         documented = documented_datasets(experiment)
-        written = {k: group[k] for k in group.keys()}
+        written = {k: group[k] for k in group.keys() if isinstance(group[k], h5py.Dataset)}
         self.assertEqual(sorted(written), sorted(documented), "%s: written vs documented" % where)
+        for name in group.keys():
+            if isinstance(group[name], h5py.Group):
+                self.check_subgroup(group[name], name, "%s/%s" % (where, name))
         for name, ds in written.items():
             units, description = ds.attrs.get("units"), ds.attrs.get("description")
             self.assertTrue(units and description, "%s/%s has no units or description" % (where, name))
             if name in documented:
                 self.assertEqual((h5_type(ds), units, description), documented[name], "%s/%s" % (where, name))
 
+    def check_subgroup(self, group, name, where):
+        groups = documented_groups()
+        self.assertIn(name, groups, where + " is not a documented group")
+        self.assertTrue(group.attrs.get("description"), where + " has no description")
+        table = documented_group_table() if name == "contacts" else {}
+        for key in group.keys():
+            ds = group[key]
+            self.assertIn(key, groups[name], "%s/%s is not in the doc" % (where, key))
+            self.assertTrue(ds.attrs.get("units") and ds.attrs.get("description"),
+                            "%s/%s has no units or description" % (where, key))
+            if key in table:
+                self.assertEqual((ds.dtype.name, ds.attrs["units"]), (table[key][0].split()[0], table[key][1]),
+                                 "%s/%s" % (where, key))
+        if table:
+            self.assertEqual(sorted(group.keys()), sorted(table), where + ": written vs documented")
+
     def test_snapshot_datasets_match_the_doc(self):
+        seen_groups = set()
         for experiment, run in self.dirs.items():
             files = sorted(glob.glob(os.path.join(run, "snapshots", "output_*.h5")))
             self.assertGreaterEqual(len(files), 2)
@@ -147,11 +195,13 @@ class OutputFilesMatchTheirDoc(unittest.TestCase):
             for path in files:
                 with h5py.File(path, "r") as f:
                     self.check_group(f, experiment, path)
+                    seen_groups.update(k for k in f.keys() if isinstance(f[k], h5py.Group))
                     self.assertEqual(f.attrs["config_toml"], config, path)
             with h5py.File(os.path.join(run, "snapshots.h5"), "r") as index:
                 self.assertEqual(index.attrs["config_toml"], config)
                 self.assertEqual(len(index.keys()), int(index.attrs["n_outputs"]))  # links only, no datasets
                 self.check_group(index["output_000000"], experiment, "snapshots.h5/output_000000")
+        self.assertEqual(seen_groups, set(documented_groups()), "groups written vs documented")
 
     def test_packing_file_matches_the_doc(self):
         run = self.dirs["packing"]

@@ -23,7 +23,8 @@ SCRIPT = os.path.join(REPO, "tests", "python", "paraview_open_run.py")
 BINARY = os.environ.get("OROGEN_BINARY", os.path.join(REPO, "build", "release", "orogen"))
 WEDGE = ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
          "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
-         "--set", "wedge.outputs=4", "--set", "output.progress=never", "--threads", "1"]
+         "--set", "wedge.outputs=4", "--set", "output.contacts=true", "--set", "output.progress=never",
+         "--threads", "1"]
 PACKING = ["--set", "run.experiment=packing", "--set", "particles.packing=random_discs", "--set", "layer.length=10",
            "--set", "layer.thickness=3", "--set", "contact.kn=1000", "--set", "settle.relax_time=1",
            "--set", "settle.ke_threshold=1e-3", "--set", "output.interval=2", "--set", "output.progress=never",
@@ -77,7 +78,8 @@ class ParaViewOpensARun(unittest.TestCase):
             cls.times = [float(f["output_%06d" % k].attrs["time"]) for k in range(n)]
             last = f["output_%06d" % (n - 1)]
             cls.n_discs = last["x"].shape[0]
-            cls.arrays = sorted(k for k in last.keys() if last[k].ndim == 1)
+            cls.arrays = sorted(k for k in last.keys() if isinstance(last[k], h5py.Dataset) and last[k].ndim == 1)
+            cls.n_contacts = last["contacts/fn"].shape[0]
             cls.walls = last["walls"][()].tolist()
             cls.x, cls.y = last["x"][()], last["y"][()]
 
@@ -87,7 +89,8 @@ class ParaViewOpensARun(unittest.TestCase):
         seen = run_paraview(self.command, run_dir, os.path.join(self.tmp, "packing.png"))
         with h5py.File(os.path.join(run_dir, "packing.h5"), "r") as f:
             g = f["output_000000"]
-            time, n, arrays = float(g.attrs["time"]), g["x"].shape[0], sorted(k for k in g if g[k].ndim == 1)
+            time, n = float(g.attrs["time"]), g["x"].shape[0]
+            arrays = sorted(k for k in g if isinstance(g[k], h5py.Dataset) and g[k].ndim == 1)
             n_walls = g["walls"].shape[0]
         self.assertEqual(seen["packing_times"], [time])
         self.assertEqual(seen["packing_blocks"]["discs"]["points"], n)
@@ -114,6 +117,14 @@ class ParaViewOpensARun(unittest.TestCase):
             self.assertIn(name, discs["arrays"])
         self.assertAlmostEqual(discs["bounds"][0], min(self.x))
         self.assertAlmostEqual(discs["bounds"][3], max(self.y))
+
+    def test_contacts_are_line_cells_with_their_forces(self):
+        contacts = self.seen["xmf_blocks"]["contacts"]
+        self.assertGreater(self.n_contacts, 0)
+        self.assertEqual(contacts["cells"], self.n_contacts)
+        self.assertEqual(contacts["points"], 2 * self.n_contacts)
+        self.assertEqual(contacts["cell_types"], [VTK_POLY_LINE])
+        self.assertEqual(contacts["cell_arrays"], ["fn", "ft", "overlap"])
 
     def test_walls_are_line_cells(self):
         walls = self.seen["xmf_blocks"]["walls"]

@@ -39,8 +39,10 @@ CASES = {
     "packing_sparse_checkpoints": [os.path.join(REPO, "examples", "packing_clusters.toml"), "--set", "layer.length=16",
                                    "--set", "layer.thickness=5", "--set", "output.interval=0.3",
                                    "--set", "output.checkpoint_every=4"],
+    # With the contact and stress outputs on: a resumed run must store the same forces too.
     "wedge": ["--set", "wedge.s_end=0.12", "--set", "wedge.outputs=12", "--set", "output.checkpoint_every=2",
-              "--set", "layer.length=60", "--set", "layer.thickness=6"],
+              "--set", "layer.length=60", "--set", "layer.thickness=6", "--set", "output.contacts=true",
+              "--set", "output.stress=true", "--set", "output.stress_grid=2"],
 }
 
 IGNORED = {"run.log", "run.lock"}
@@ -65,15 +67,19 @@ def h5_content(path):
             for k, v in sorted(obj.attrs.items()):
                 content[prefix + "@" + k] = repr(v).encode() if not isinstance(v, numpy.ndarray) else v.tobytes()
 
+        def walk(prefix, group):
+            # Output groups hold datasets and groups of their own (contacts, clusters, ...).
+            for name in sorted(group.keys()):
+                obj = group[name]
+                if isinstance(obj, h5py.Dataset):
+                    content[prefix + name] = obj[()].tobytes()
+                    attrs(prefix + name + "@", obj)
+                else:
+                    attrs(prefix + name + "/", obj)
+                    walk(prefix + name + "/", obj)
+
         attrs("/", f)
-        for name in sorted(f.keys()):
-            g = f[name]
-            if isinstance(g, h5py.Dataset):
-                content[name] = g[()].tobytes()
-                continue
-            attrs(name + "/", g)
-            for ds in sorted(g.keys()):
-                content[name + "/" + ds] = g[ds][()].tobytes()
+        walk("", f)
     return content
 
 

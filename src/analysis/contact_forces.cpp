@@ -1,0 +1,77 @@
+#include "analysis/contact_forces.hpp"
+
+#include <cmath>
+
+#include "boundary/wall_contact_law.hpp"
+
+namespace orogen {
+namespace {
+
+void add(ContactList& c, bool wall, std::int64_t id_a, std::int64_t id_b, std::int64_t index_a, std::int64_t index_b,
+         double x, double y, double nx, double ny, double fn, double ft, double fx, double fy, double overlap,
+         bool at_limit) {
+  c.is_wall.push_back(wall ? 1 : 0);
+  c.id_a.push_back(id_a); c.id_b.push_back(id_b);
+  c.index_a.push_back(index_a); c.index_b.push_back(index_b);
+  c.x.push_back(x); c.y.push_back(y);
+  c.nx.push_back(nx); c.ny.push_back(ny);
+  c.fn.push_back(fn); c.ft.push_back(ft);
+  c.fx.push_back(fx); c.fy.push_back(fy);
+  c.overlap.push_back(overlap);
+  c.at_limit.push_back(at_limit ? 1 : 0);
+}
+
+ContactList measure(const World& w) {
+  ContactList c;
+  const auto& L = w.neighbors;
+  const auto& d = w.discs;
+  for (std::size_t p = 0; p < L.size(); ++p) {
+    const auto i = L.first[p], j = L.second[p];
+    const double dx = d.x[j] - d.x[i], dy = d.y[j] - d.y[i];
+    const double gn = L.gamma_n[p];
+    double xi = L.xi[p];  // a copy: the state keeps its own
+    PairForce f;
+    if (!contact_force(dx, dy, d.radius[i], d.radius[j], d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.omega[i],
+                       d.omega[j], w.law.kn, w.law.ks, w.law.mu, gn, w.law.tangential_damping_ratio * gn, w.dt, xi,
+                       f))
+      continue;
+    const double dist = std::sqrt(dx * dx + dy * dy);
+    const double inv = 1.0 / dist;  // as contact_force: the same bits
+    const double nx = dx * inv, ny = dy * inv;
+    const double overlap = d.radius[i] + d.radius[j] - dist;
+    const double reach = d.radius[i] - 0.5 * overlap;  // centre of i to the middle of the overlap
+    add(c, false, d.id[i], d.id[j], i, j, d.x[i] + reach * nx, d.y[i] + reach * ny, nx, ny, f.fn, f.ft, f.fx, f.fy,
+        overlap, f.at_limit);
+  }
+  // Rows of the enabled walls, as the output's `walls` dataset lists them.
+  std::vector<std::int64_t> row(w.walls.size(), -1);
+  std::int64_t enabled = 0;
+  for (std::size_t k = 0; k < w.walls.size(); ++k)
+    if (w.walls[k].enabled) row[k] = enabled++;
+  const auto& wc = L.walls;
+  for (std::size_t k = 0; k < wc.size(); ++k) {
+    const auto i = wc.disc[k];
+    if (row[wc.wall[k]] < 0) continue;
+    const WallContactForce f = wall_contact_force(w.walls[wc.wall[k]], d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i],
+                                                  d.radius[i], wc.gamma_n[k], wc.mass[k], wc.xi[k], w.law, w.dt);
+    if (!f.touching) continue;
+    const double reach = d.radius[i] - 0.5 * f.delta;
+    add(c, true, row[wc.wall[k]], d.id[i], -1, i, d.x[i] - reach * f.nx, d.y[i] - reach * f.ny, f.nx, f.ny, f.fn,
+        f.ft, f.fn * f.nx + f.ft * -f.ny, f.fn * f.ny + f.ft * f.nx, f.delta, f.at_limit);
+  }
+  return c;
+}
+
+}  // namespace
+
+ContactList measure_contact_forces(const World& world) {
+  const auto& L = world.neighbors;
+  const bool list_matches = L.valid && L.x_ref.size() == world.discs.size();
+  if (list_matches && world.moved + wall_displacement(L, world.walls) <= 0.5 * L.skin) return measure(world);
+  // The next step rebuilds first: so does the copy, keeping the disc order of the output.
+  World copy = world;
+  build_neighbor_list(copy.neighbors, copy.discs, copy.clusters, copy.walls, copy.law, copy.dt, false);
+  return measure(copy);
+}
+
+}  // namespace orogen
