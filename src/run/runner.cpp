@@ -4,7 +4,6 @@
 #include <fmt/ranges.h>
 #include <omp.h>
 #include <spdlog/sinks/basic_file_sink.h>
-#include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <cmath>
@@ -22,6 +21,7 @@
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
 #include "run/run_folder.hpp"
+#include "run/status_line_sink.hpp"
 #include "run/stop_signals.hpp"
 #include "run/thread_tuner.hpp"
 #include "world/world_archive.hpp"
@@ -44,9 +44,9 @@ struct RunState {
 
 std::string vtp_name(std::int64_t k) { return fmt::format("vtp/output_{:06d}.vtp", k); }
 
-std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir) {
+// The log goes to run.log and to stderr; the stderr sink also carries the progress line.
+std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir, const std::shared_ptr<StatusLineSink>& console) {
   auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "run.log").string());
-  auto console = std::make_shared<spdlog::sinks::stderr_sink_mt>();
   console->set_level(spdlog::level::info);
   auto log = std::make_shared<spdlog::logger>("orogen", spdlog::sinks_init_list{file, console});
   log->set_pattern("[%Y-%m-%d %H:%M:%S] %v");
@@ -393,7 +393,8 @@ int run_command(const RunOptions& opt) {
         throw;
       }
     }
-    auto logger = make_logger(opt.out);
+    auto console = std::make_shared<StatusLineSink>(stderr);
+    auto logger = make_logger(opt.out, console);
     spdlog::drop("orogen");
     spdlog::register_logger(logger);
     logger->info("orogen {} {} in {} with {} thread(s)", OROGEN_VERSION, opt.resume ? "resume" : "run",
@@ -414,7 +415,7 @@ int run_command(const RunOptions& opt) {
     started = true;
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
                  run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
-    Progress progress(progress_mode(config));
+    Progress progress(progress_mode(config), console);
     const StopSignals stop_signals;
     try {
       if (const int sig = run.loop(progress); sig != 0) return 128 + sig;
