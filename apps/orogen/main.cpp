@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, orogen::kMaxThreads));
   std::string resume_dir;
   auto* resume_opt = run_cmd->add_option("--resume", resume_dir, "continue the killed run in this folder");
+  auto* from_opt = run_cmd->add_option(
+      "--from", run.from, "start from an output of another run: RUN_DIR[:OUTPUT] (default the last), a branch");
   run_cmd->add_option("--abort-after-outputs", run.abort_after_outputs,
                       "test hook: exit 137 with no cleanup once this many outputs are written")
       ->group("");  // hidden
@@ -145,6 +147,10 @@ int main(int argc, char** argv) {
     if (!config_path.empty()) run.config = config_path;
     if (resume_opt->count() > 0 && resume_dir.empty()) {
       std::cerr << "error: --resume needs a run folder (got an empty one)\n";
+      return 2;
+    }
+    if (from_opt->count() > 0 && run.from.empty()) {
+      std::cerr << "error: --from needs a run folder (got an empty one)\n";
       return 2;
     }
     if (!resume_dir.empty()) { run.resume = true; run.out = resume_dir; }
