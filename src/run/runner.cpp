@@ -229,6 +229,7 @@ class Run {
   }
 
   World& world() { return world_; }
+  const std::string& branch_from() const { return branch_from_; }
   const std::string& checkpoint_config() const { return checkpoint_config_; }
   void abort_after_outputs(std::int64_t n) { abort_after_outputs_ = n; }
 
@@ -521,7 +522,9 @@ int run_command(const RunOptions& opt) {
     if (from_checkpoint) {
       if (!opt.overrides.empty()) {
         const std::string before = run.checkpoint_config();
-        write_file_atomically(opt.out / "config.toml", config.to_toml());
+        const std::string header =
+            run.branch_from().empty() ? "" : fmt::format("{}{} (orogen run --from)\n", kBranchHeader, run.branch_from());
+        write_file_atomically(opt.out / "config.toml", header + config.to_toml());
         logger->info("extended: {}", extension_changes(config.to_toml(), before));
       }
       run.reopen_outputs();

@@ -106,6 +106,11 @@ class BranchTest(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stderr)
         for f in ("series.csv", "checkpoint.bin"):
             self.assertTrue(filecmp.cmp(os.path.join(whole, f), os.path.join(killed, f), shallow=False), f)
+        # Extended, it still names its source.
+        r = orogen("run", "--resume", killed, "--set", "wedge.s_end=0.35", "--set", "wedge.outputs=7")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(killed, "config.toml")) as f:
+            self.assertTrue(f.readline().startswith("# branch of %s:1" % self.source))
 
     def test_bad_from_exit_2_naming_it(self):
         empty = self.path("empty")
