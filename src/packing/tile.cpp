@@ -52,7 +52,7 @@ Tile load_tile(const std::filesystem::path& file) {
   const auto content = meta.strings.find("content");
   // Says only what is wrong with the file: callers name the file and what they expected.
   if (content == meta.strings.end())
-    throw std::runtime_error(file.string() + " has no Orogen content tag");
+    throw std::runtime_error(file.string() + " has no content attribute (a packing's is 'orogen-packing')");
   if (content->second != "orogen-packing")
     throw std::runtime_error(file.string() + " holds '" + content->second + "', not 'orogen-packing'");
   if (reader.count() < 1) throw std::runtime_error(file.string() + " holds no output");
