@@ -429,7 +429,12 @@ void build_branch(Run& run, const BranchSource& source, const fs::path& out) {
   replay.replay_to(source.output);
   const fs::path state = out / "branch_state.bin";
   replay.save_state(state);
-  run.load_branch(ArchiveReader(state), source, snap);
+  try {
+    run.load_branch(ArchiveReader(state), source, snap);
+  } catch (...) {
+    fs::remove(state);
+    throw;
+  }
   fs::remove(state);
 }
 
