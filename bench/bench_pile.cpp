@@ -1,4 +1,4 @@
-// Orogen reproduction of the LAMMPS granular-pile benchmark (/work/shared/bench/lammps/):
+// Orogen reproduction of the LAMMPS granular-pile benchmark (bench/lammps/):
 // a settled 2D polydisperse pile under gravity, timed either at rest ("static") or while the
 // left wall pushes into it at 0.5 ("push"). See bench/README.md and docs/performance.md.
 //

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Side-by-side benchmark: LAMMPS (GRANULAR pile, /work/shared/bench/lammps) against Orogen's
+# Side-by-side benchmark: LAMMPS (GRANULAR pile, bench/lammps) against Orogen's
 # bench_pile on the same problem, same machine, same sitting. Builds nothing: build bench_pile
 # first (cmake --build build/release --target bench_pile).
 #
@@ -9,7 +9,7 @@
 #     LAMMPS's README uses 20000/20000/5000: fine on a quiet machine, about 2x the run time)
 #   OROGEN_OMP_WAIT_POLICY=passive   (libgomp's default spinning makes 2-thread runs ~100x slower
 #     when the 2 cores are shared with other jobs; "" restores the default)
-#   BENCH=build/release/bench_pile  LAMMPS_DIR=/work/shared/bench/lammps  LMP=lmp
+#   BENCH=build/release/bench_pile  LAMMPS_DIR=bench/lammps  LMP=lmp
 #   SETTLE (settling steps for every size; default 30000, 40000 for N >= 80000 as LAMMPS's README)
 #   OUT=bench/results/compare-<date>.md   KEEP=1 keeps the work directory
 # Needs: lmp (Debian package lammps), mpirun (openmpi-bin, for LAMMPS's 2-rank settling),
@@ -22,7 +22,7 @@
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BENCH=${BENCH:-$ROOT/build/release/bench_pile}
-LAMMPS_DIR=${LAMMPS_DIR:-/work/shared/bench/lammps}
+LAMMPS_DIR=${LAMMPS_DIR:-$ROOT/bench/lammps}
 LMP_BIN=${LMP:-lmp}
 NS=${NS:-"5000 20000 80000"}
 MODES=${MODES:-"static push"}

@@ -488,8 +488,18 @@ TEST_F(Cli, WedgeStartsFromAPackingFileAndRefusesAWrongOne) {
                                dir_);
   EXPECT_EQ(junk.status, 2);
   EXPECT_NE(junk.err.find("wedge.packing_file"), std::string::npos) << junk.err;
+  // An HDF5 file of another kind (a run's snapshots): said once, with what the file holds.
+  const auto other = orogen_cli("run --out '" + (dir_ / "bad3").string() + "' --set wedge.packing_file='" +
+                                    (dir_ / "wedge" / "snapshots.h5").string() + "'" + quiet,
+                                dir_);
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(other.err.find("has no content attribute"), std::string::npos) << other.err;
+  const auto first = other.err.find("packing run");
+  EXPECT_NE(first, std::string::npos) << other.err;
+  EXPECT_EQ(other.err.find("packing run", first + 1), std::string::npos) << other.err;
   EXPECT_FALSE(fs::exists(dir_ / "bad1"));
   EXPECT_FALSE(fs::exists(dir_ / "bad2"));
+  EXPECT_FALSE(fs::exists(dir_ / "bad3"));
 }
 
 TEST_F(Cli, WedgeResumeAfterKillIsBitwiseIdentical) {

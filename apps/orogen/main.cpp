@@ -1,11 +1,14 @@
 // orogen: the command line front end. Each subcommand is a thin wrapper over the library.
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <iostream>
+#include <limits>
 
 #include "config/config.hpp"
 #include "config/schema.hpp"
 #include "run/ensemble_command.hpp"
+#include "run/export_command.hpp"
 #include "run/render_command.hpp"
 #include "run/runner.hpp"
 #include "run/sweep_command.hpp"
@@ -32,6 +35,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, orogen::kMaxThreads));
   std::string resume_dir;
   auto* resume_opt = run_cmd->add_option("--resume", resume_dir, "continue the killed run in this folder");
+  auto* from_opt = run_cmd->add_option(
+      "--from", run.from, "start from an output of another run: RUN_DIR[:OUTPUT] (default the last), a branch");
   run_cmd->add_option("--abort-after-outputs", run.abort_after_outputs,
                       "test hook: exit 137 with no cleanup once this many outputs are written")
       ->group("");  // hidden
@@ -97,6 +102,17 @@ int main(int argc, char** argv) {
   ensemble_cmd->add_flag("--dry-run", ensemble.dry_run, "check the ensemble, list its members; run nothing");
   ensemble_cmd->add_flag("--no-stats", ensemble.no_stats, "run the members only (python/ensemble_stats.py DIR later)");
 
+  orogen::ExportCommandOptions export_opt;
+  std::string export_dir, export_to;
+  auto* export_cmd = app.add_subcommand("export", "write one output of a run for other tools: a LAMMPS data file "
+                                                  "or dump, extended XYZ, CSV");
+  export_cmd->add_option("dir", export_dir, "run folder")->required();
+  export_cmd->add_option("--output", export_opt.output, "output index (default: the last)")
+      ->check(not_empty)
+      ->check(CLI::Range(std::int64_t{0}, std::numeric_limits<std::int64_t>::max()));
+  export_cmd->add_option("--format", export_opt.format, "lammps-data | lammps-dump | xyz | csv")->required();
+  export_cmd->add_option("--to", export_to, "the file to write")->required();
+
   bool markdown = false;
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
   config_cmd->add_flag("--markdown", markdown, "print the key reference as Markdown tables instead");
@@ -135,6 +151,10 @@ int main(int argc, char** argv) {
       std::cerr << "error: --resume needs a run folder (got an empty one)\n";
       return 2;
     }
+    if (from_opt->count() > 0 && run.from.empty()) {
+      std::cerr << "error: --from needs a run folder (got an empty one)\n";
+      return 2;
+    }
     if (!resume_dir.empty()) { run.resume = true; run.out = resume_dir; }
     else run.out = out;
     return orogen::run_command(run);
@@ -148,6 +168,11 @@ int main(int argc, char** argv) {
     ensemble.file = ensemble_file;
     ensemble.out = ensemble_out;
     return orogen::ensemble_command(ensemble);
+  }
+  if (*export_cmd) {
+    export_opt.dir = export_dir;
+    export_opt.to = export_to;
+    return orogen::export_command(export_opt);
   }
   render.dir = render_dir;
   render.animation = !no_animation;

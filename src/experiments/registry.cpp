@@ -67,7 +67,7 @@ std::unique_ptr<Experiment> make_wedge(const Config& c) {
       thickness = tile.thickness;
     } catch (const std::exception& e) {
       throw config_error(c.source_of("wedge.packing_file"), "wedge.packing_file", w.packing_file,
-                         std::string("an existing packing.h5 written by a packing run (") + e.what() + ")");
+                         std::string("must be the packing.h5 of a packing run: ") + e.what());
     }
     if (std::fabs(thickness - w.h0) > 1e-9 * w.h0)
       throw config_error(c.source_of("wedge.packing_file"), "wedge.packing_file", w.packing_file,

@@ -50,8 +50,12 @@ Tile load_tile(const std::filesystem::path& file) {
   const SnapshotReader reader(file);
   const auto& meta = reader.metadata();
   const auto content = meta.strings.find("content");
-  if (content == meta.strings.end() || content->second != "orogen-packing" || reader.count() < 1)
-    throw std::runtime_error(file.string() + " is not a packing file (packing.h5 written by a packing run)");
+  // Says only what is wrong with the file: callers name the file and what they expected.
+  if (content == meta.strings.end())
+    throw std::runtime_error(file.string() + " has no content attribute (a packing's is 'orogen-packing')");
+  if (content->second != "orogen-packing")
+    throw std::runtime_error(file.string() + " holds '" + content->second + "', not 'orogen-packing'");
+  if (reader.count() < 1) throw std::runtime_error(file.string() + " holds no output");
   const Snapshot s = reader.read(reader.count() - 1);
   Tile t;
   t.length = meta.numbers.at("length");

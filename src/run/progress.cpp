@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <cstdio>
+#include <cmath>
+#include <utility>
 
 namespace orogen {
 
-Progress::Progress(Mode mode)
+Progress::Progress(Mode mode, std::shared_ptr<StatusLineSink> line)
     : enabled_(mode == Mode::Always || (mode == Mode::Auto && isatty(STDERR_FILENO))),
+      line_(std::move(line)),
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
@@ -32,13 +34,12 @@ void Progress::update(std::uint64_t step, double time, std::size_t particles, do
     const double rest = elapsed / fraction * (1 - fraction);
     left = fmt::format("{:.0f}:{:02.0f}", std::floor(rest / 60), std::fmod(rest, 60.0));
   }
-  std::fprintf(stderr, "\r\033[K step %llu  t %.2f  %.2f M particle-steps/s  left %s  %s",
-               static_cast<unsigned long long>(step), time, rate() / 1e6, left.c_str(), status.c_str());
-  std::fflush(stderr);
+  line_->show(fmt::format(" step {}  t {:.2f}  {:.2f} M particle-steps/s  left {}  {}", step, time, rate() / 1e6,
+                          left, status));
 }
 
 void Progress::finish() {
-  if (enabled_) std::fprintf(stderr, "\n");
+  if (enabled_) line_->close();
 }
 
 }  // namespace orogen

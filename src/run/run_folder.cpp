@@ -34,6 +34,10 @@ constexpr std::array<std::string_view, 6> kKeysOutsideIdentity = {"run.threads",
 
 constexpr std::array<std::string_view, 2> kExtensionKeys = {"wedge.s_end", "wedge.outputs"};
 
+bool is_temporary(const fs::path& p) { return p.filename().string().find(".tmp-") != std::string::npos; }
+
+}  // namespace
+
 // "section.key" -> value text of each assignment line of a resolved configuration.
 std::map<std::string, std::string> key_values(std::string_view toml) {
   std::map<std::string, std::string> out;
@@ -56,9 +60,6 @@ std::map<std::string, std::string> key_values(std::string_view toml) {
   return out;
 }
 
-bool is_temporary(const fs::path& p) { return p.filename().string().find(".tmp-") != std::string::npos; }
-
-}  // namespace
 
 RunFolderLock::RunFolderLock(const fs::path& dir) : dir_(dir) {
   std::error_code ec;

@@ -4,6 +4,7 @@
 // configuration, so that no two runs ever write into one folder and no resume mixes runs.
 #include <filesystem>
 #include <stdexcept>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,6 +55,9 @@ int remove_temporary_files(const std::filesystem::path& dir);
 // extend a run aside; "" if none.
 std::string config_differences(std::string_view here, std::string_view there, std::string_view here_name,
                                std::string_view there_name);
+
+// "section.key" -> value text of each assignment line of a resolved configuration (Config::to_toml).
+std::map<std::string, std::string> key_values(std::string_view toml);
 
 // Keys a resume may change: they move a run's end and the spacing of its outputs, never what
 // it computes up to there (`orogen run --resume DIR --set wedge.s_end=30`).

@@ -4,13 +4,13 @@
 #include <fmt/ranges.h>
 #include <omp.h>
 #include <spdlog/sinks/basic_file_sink.h>
-#include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "analysis/contact_output.hpp"
@@ -18,11 +18,14 @@
 #include "experiments/experiment.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv_series.hpp"
+#include "io/snapshot_reader.hpp"
 #include "io/snapshot_writer.hpp"
 #include "io/vtp_writer.hpp"
+#include "run/branch_source.hpp"
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
 #include "run/run_folder.hpp"
+#include "run/status_line_sink.hpp"
 #include "run/stop_signals.hpp"
 #include "run/thread_tuner.hpp"
 #include "world/world_archive.hpp"
@@ -55,9 +58,9 @@ ContactOutputOptions contact_output_options(const Config& config) {
 
 std::string vtp_name(std::int64_t k) { return fmt::format("vtp/output_{:06d}.vtp", k); }
 
-std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir) {
+// The log goes to run.log and to stderr; the stderr sink also carries the progress line.
+std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir, const std::shared_ptr<StatusLineSink>& console) {
   auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "run.log").string());
-  auto console = std::make_shared<spdlog::sinks::stderr_sink_mt>();
   console->set_level(spdlog::level::info);
   auto log = std::make_shared<spdlog::logger>("orogen", spdlog::sinks_init_list{file, console});
   log->set_pattern("[%Y-%m-%d %H:%M:%S] %v");
@@ -108,6 +111,8 @@ class Run {
     state_.outputs = in.get_scalar<std::int64_t>("run.outputs");
     in.get("run.output_times", state_.output_times);
     last_output_step_ = in.get_scalar<std::uint64_t>("run.last_output_step");
+    if (in.has("run.output_base")) output_base_ = in.get_scalar<double>("run.output_base");  // a branch
+    if (in.has("run.branch_from")) branch_from_ = in.get_string("run.branch_from");
     checkpoint_config_ = in.get_string("run.config");
     check_outputs_belong();
   }
@@ -146,7 +151,7 @@ class Run {
       particle_steps += work;
       const int threads = tuner.threads();
       if (tuner.after_step(work, seconds()) != threads) omp_set_num_threads(tuner.threads());
-      if (world_.time >= static_cast<double>(state_.outputs) * interval_ - 1e-9 * interval_) {
+      if (world_.time >= (output_base_ + static_cast<double>(state_.outputs)) * interval_ - 1e-9 * interval_) {
         const double output_start = seconds();
         output();
         const double secs = seconds();
@@ -182,7 +187,62 @@ class Run {
     return 0;
   }
 
+  // A branch's source, replayed: its set-up, then its steps up to output k with what its
+  // outputs do to the experiment's state, and no file written. Bitwise the source's run.
+  void replay_to(std::int64_t k) {
+    setup();
+    auto output = [&] {
+      exp_->after_output(world_);
+      ++state_.outputs;
+      last_output_step_ = world_.step;
+    };
+    output();
+    while (state_.outputs <= k) {
+      if (!exp_->advance(world_)) {
+        if (world_.step != last_output_step_) output();  // a run's last output comes at its end
+        break;
+      }
+      if (world_.time >= static_cast<double>(state_.outputs) * interval_ - 1e-9 * interval_) output();
+    }
+    if (state_.outputs <= k) throw std::runtime_error(fmt::format("the replay ended before output {}", k));
+  }
+
+  // The state of the world and the experiment alone (what a branch starts from).
+  void save_state(const fs::path& file) {
+    ArchiveWriter out;
+    save_world(out, world_);
+    exp_->save(out);
+    out.finish(file);
+  }
+
+  // Starts from another run's state at its output `snap` (read from `in`): the world and the
+  // experiment's state bit for bit, with this run's configuration; checks the positions,
+  // velocities and ids against the stored snapshot. Output 0 is that state again, with the
+  // source's own output fields; later outputs keep the source's spacing in time.
+  void load_branch(const ArchiveReader& in, const BranchSource& source, const Snapshot& snap) {
+    apply_engine_config(config_, world_);
+    load_world(in, world_);
+    exp_->load(in);
+    const Discs& d = world_.discs;
+    bool same = d.size() == snap.size();
+    for (std::size_t i = 0; same && i < d.size(); ++i)
+      same = d.id[i] == snap.id[i] && d.x[i] == snap.field("x")[i] && d.y[i] == snap.field("y")[i] &&
+             d.vx[i] == snap.field("vx")[i] && d.vy[i] == snap.field("vy")[i];
+    if (!same)
+      throw std::runtime_error(fmt::format("--from {}: the rebuilt state differs from the stored output (was the run "
+                                           "made by another Orogen version?)",
+                                           source.text()));
+    for (const auto& [name, values] : snap.fields)
+      if (std::find(kSnapshotDiscArrays.begin(), kSnapshotDiscArrays.end(), name) == kSnapshotDiscArrays.end())
+        branch_fields_[name] = values;
+    branch_from_ = source.text();
+    branch_start_ = true;
+    // The next output comes at the next multiple of the interval after the branch's time.
+    output_base_ = std::floor(world_.time / interval_ + 1e-6);
+  }
+
   World& world() { return world_; }
+  const std::string& branch_from() const { return branch_from_; }
   const std::string& checkpoint_config() const { return checkpoint_config_; }
   void abort_after_outputs(std::int64_t n) { abort_after_outputs_ = n; }
 
@@ -198,6 +258,7 @@ class Run {
     m.numbers["x_split"] = exp_->x_split();
     m.strings["run_identity"] = identity_;
     m.strings[kConfigAttr] = config_.to_toml();
+    if (!branch_from_.empty()) m.strings["branch_from"] = branch_from_;
     return m;
   }
 
@@ -222,6 +283,10 @@ class Run {
     frame.discs = &world_.discs;
     for (auto& [name, value] : exp_->scalars(world_)) frame.attrs[name] = value;
     frame.fields = exp_->fields(world_);
+    // A branch's output 0 repeats the source's output fields (their units and descriptions are the experiment's).
+    for (auto& field : frame.fields)
+      if (auto it = branch_fields_.find(field.name); it != branch_fields_.end()) field.values = it->second;
+    branch_fields_.clear();
     for (const auto& w : world_.walls)
       if (w.enabled) frame.walls.push_back({w.ax, w.ay, w.bx, w.by});
     frame.groups = contact_output_groups(world_, contact_output_);
@@ -234,7 +299,8 @@ class Run {
     state_.output_times.push_back(world_.time);
     ++state_.outputs;
     last_output_step_ = world_.step;
-    exp_->after_output(world_);
+    if (!branch_start_) exp_->after_output(world_);  // a branch's state has seen its output already
+    branch_start_ = false;
     if (write_vtp_) write_pvd_file();
     // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
     if (state_.outputs == abort_after_outputs_) std::_Exit(137);
@@ -270,6 +336,8 @@ class Run {
     out.put("run.output_times", state_.output_times);
     out.put_scalar<std::uint8_t>("run.finished", state_.finished ? 1 : 0);
     out.put_scalar("run.last_output_step", last_output_step_);
+    out.put_scalar("run.output_base", output_base_);
+    out.put_string("run.branch_from", branch_from_);
     out.put_string("run.identity", identity_);
     out.put_string("run.config", config_.to_toml());
     out.finish(dir_ / "checkpoint.bin");
@@ -317,6 +385,10 @@ class Run {
   std::string checkpoint_config_;  // the configuration the loaded checkpoint was written with
   std::uint64_t last_output_step_ = 0;
   std::int64_t abort_after_outputs_ = 0;
+  double output_base_ = 0;        // a branch: outputs of its source before its output 0
+  std::string branch_from_;       // a branch: "SOURCE_DIR:OUTPUT"
+  bool branch_start_ = false;     // the next output is a branch's output 0
+  std::map<std::string, std::vector<double>> branch_fields_;  // its fields, by name
   std::optional<SnapshotWriter> snapshots_;
   std::optional<CsvSeries> series_;
 };
@@ -335,7 +407,8 @@ namespace {
 // A fresh run: the folder is claimed (locked) before anything else, must hold no run files,
 // and gets its config.toml before set-up, so that a run killed during a long set-up is
 // already a run that --resume starts again.
-void claim_for_new_run(const RunOptions& opt, const Config& config, RunFolderLock& lock) {
+// `header`: comment lines put before the configuration (a branch names its source there).
+void claim_for_new_run(const RunOptions& opt, const Config& config, RunFolderLock& lock, const std::string& header) {
   if (fs::exists(opt.out / "config.toml")) {
     lock.abandon();
     throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
@@ -347,7 +420,43 @@ void claim_for_new_run(const RunOptions& opt, const Config& config, RunFolderLoc
                                  "--out",
                                  opt.out.string(), fmt::join(found, ", ")));
   }
-  write_file_atomically(opt.out / "config.toml", config.to_toml());
+  write_file_atomically(opt.out / "config.toml", header + config.to_toml());
+}
+
+constexpr std::string_view kBranchHeader = "# branch of ";
+
+bool is_branch_folder(const fs::path& dir) {
+  std::ifstream in(dir / "config.toml");
+  std::string first;
+  std::getline(in, first);
+  return first.starts_with(kBranchHeader);
+}
+
+// A branch's first state: its source's checkpoint when that holds the output, else a replay
+// of the source from its set-up (bitwise the same run) to that output.
+void build_branch(Run& run, const BranchSource& source, const fs::path& out) {
+  const fs::path h5 = source.dir / "snapshots.h5";
+  const Snapshot snap = SnapshotReader(h5).read(source.output);
+  if (source.at_checkpoint) {
+    run.load_branch(ArchiveReader(source.dir / "checkpoint.bin"), source, snap);
+    return;
+  }
+  const SnapshotMetadata meta = read_snapshot_metadata(h5);
+  if (const auto it = meta.strings.find("branch_from"); it != meta.strings.end())
+    throw BranchError(fmt::format("--from {}: that run is itself a branch (of {}), which a replay cannot rebuild; "
+                                  "branch from its checkpointed output instead",
+                                  source.text(), it->second));
+  Run replay(source.config, source.dir, make_experiment(source.config));
+  replay.replay_to(source.output);
+  const fs::path state = out / "branch_state.bin";
+  replay.save_state(state);
+  try {
+    run.load_branch(ArchiveReader(state), source, snap);
+  } catch (...) {
+    fs::remove(state);
+    throw;
+  }
+  fs::remove(state);
 }
 
 // Undoes claim_for_new_run after a set-up that failed (bad input, unstable set-up): nothing
@@ -380,7 +489,13 @@ int run_command(const RunOptions& opt) {
   try {
     if (opt.resume && opt.out.empty()) throw UsageError("--resume needs a run folder");
     if (opt.out.empty()) throw UsageError("--out needs a folder (got an empty one)");
+    if (opt.resume && !opt.from.empty()) throw UsageError("--from starts a new run (a branch); drop --resume");
     const Config config = opt.resume ? config_for_resume(opt) : Config::load(opt.config, opt.overrides);
+    std::optional<BranchSource> source;
+    if (!opt.from.empty()) {
+      source = find_branch_source(opt.from);
+      check_branch_config(config, *source);
+    }
     if (!opt.resume && fs::exists(opt.out / "config.toml"))
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
@@ -391,7 +506,13 @@ int run_command(const RunOptions& opt) {
     RunFolderLock lock(opt.out);
     // A resume without a checkpoint (killed during set-up) starts the run again from its set-up.
     const bool from_checkpoint = opt.resume && fs::exists(opt.out / "checkpoint.bin");
-    if (!opt.resume) claim_for_new_run(opt, config, lock);
+    if (!opt.resume)
+      claim_for_new_run(opt, config, lock,
+                        source ? fmt::format("{}{} (orogen run --from)\n", kBranchHeader, source->text()) : "");
+    if (opt.resume && !from_checkpoint && is_branch_folder(opt.out))
+      throw UsageError(fmt::format("--resume {}: this branch was stopped before its first checkpoint; remove the "
+                                   "folder and start the branch again",
+                                   opt.out.string()));
     const int stale = remove_temporary_files(opt.out);
     if (opt.resume && !from_checkpoint) remove_run_outputs(opt.out);
 
@@ -401,7 +522,8 @@ int run_command(const RunOptions& opt) {
       run.load_checkpoint(!opt.overrides.empty());
     } else {
       try {
-        run.setup();
+        if (source) build_branch(run, *source, opt.out);
+        else run.setup();
       } catch (const InstabilityError& e) {
         if (!opt.resume) release_new_run(opt, lock);
         std::cerr << "error: the set-up became unstable: " << e.what() << "\n";
@@ -411,17 +533,24 @@ int run_command(const RunOptions& opt) {
         throw;
       }
     }
-    auto logger = make_logger(opt.out);
+    auto console = std::make_shared<StatusLineSink>(stderr);
+    auto logger = make_logger(opt.out, console);
     spdlog::drop("orogen");
     spdlog::register_logger(logger);
     logger->info("orogen {} {} in {} with {} thread(s)", OROGEN_VERSION, opt.resume ? "resume" : "run",
                  opt.out.string(), omp_get_max_threads());
     if (stale > 0) logger->info("removed {} temporary file(s) left by a killed write", stale);
+    if (source)
+      logger->info("branch of {} at output {} (step {}, t = {:.6g}), its state {}", source->dir.string(), source->output,
+                   run.world().step, run.world().time,
+                   source->at_checkpoint ? "from its checkpoint" : "rebuilt by replaying it from its set-up");
 
     if (from_checkpoint) {
       if (!opt.overrides.empty()) {
         const std::string before = run.checkpoint_config();
-        write_file_atomically(opt.out / "config.toml", config.to_toml());
+        const std::string header =
+            run.branch_from().empty() ? "" : fmt::format("{}{} (orogen run --from)\n", kBranchHeader, run.branch_from());
+        write_file_atomically(opt.out / "config.toml", header + config.to_toml());
         logger->info("extended: {}", extension_changes(config.to_toml(), before));
       }
       run.reopen_outputs();
@@ -432,7 +561,7 @@ int run_command(const RunOptions& opt) {
     started = true;
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
                  run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
-    Progress progress(progress_mode(config));
+    Progress progress(progress_mode(config), console);
     const StopSignals stop_signals;
     try {
       if (const int sig = run.loop(progress); sig != 0) return 128 + sig;
@@ -446,6 +575,9 @@ int run_command(const RunOptions& opt) {
     std::cerr << e.what() << "\n";
     return 2;
   } catch (const UsageError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const BranchError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 2;
   } catch (const RunFolderError& e) {

@@ -15,6 +15,7 @@ struct RunOptions {
   std::filesystem::path out = "out";
   int threads = -1;                             // -1: from the configuration
   bool resume = false;                          // out names a run to continue (overrides: extension keys only)
+  std::string from;                             // "RUN_DIR[:OUTPUT]": start from that output (a branch)
   std::int64_t abort_after_outputs = 0;         // test hook: _Exit(137) once this many outputs are written
 };
 

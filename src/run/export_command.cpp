@@ -1,0 +1,66 @@
+#include "run/export_command.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+
+#include "io/atomic_file.hpp"
+#include "io/snapshot_export.hpp"
+#include "io/snapshot_reader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace orogen {
+namespace {
+
+struct BadInput : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+Snapshot read_output(const ExportCommandOptions& o, std::int64_t& k) {
+  const fs::path h5 = o.dir / "snapshots.h5";
+  if (!fs::is_regular_file(h5))
+    throw BadInput(fmt::format("{} not found: {} holds no run; export takes the folder of a run", h5.string(),
+                               o.dir.string()));
+  std::optional<SnapshotReader> reader;
+  try {
+    reader.emplace(h5);
+  } catch (const std::exception& e) {
+    throw BadInput(fmt::format("{} is not a readable orogen snapshot file: {}", h5.string(), e.what()));
+  }
+  const std::int64_t count = reader->count();
+  if (count <= 0) throw BadInput(fmt::format("{} holds no outputs yet", h5.string()));
+  k = o.output < 0 ? count - 1 : o.output;
+  if (k >= count)
+    throw BadInput(fmt::format("--output {}: out of range; {} has outputs 0 to {}", o.output, o.dir.string(), count - 1));
+  return reader->read(k);
+}
+
+}  // namespace
+
+int export_command(const ExportCommandOptions& o) {
+  try {
+    if (o.output < -1) throw BadInput(fmt::format("--output {}: must be 0 or more (an output index)", o.output));
+    if (o.to.empty()) throw BadInput("--to needs a file name");
+    ExportFormat format;
+    try {
+      format = parse_export_format(o.format);
+    } catch (const std::invalid_argument& e) {
+      throw BadInput(e.what());
+    }
+    std::int64_t k = 0;
+    const Snapshot s = read_output(o, k);
+    write_file_atomically(o.to, export_snapshot(s, format, {o.dir.string(), k}));
+    return 0;
+  } catch (const BadInput& e) {
+    std::cerr << "error: export: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: export " << o.dir.string() << " to " << o.to.string() << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace orogen
