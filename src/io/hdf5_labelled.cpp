@@ -18,7 +18,10 @@ void check(herr_t status, const std::string& what) {
 Object create(hid_t loc, const std::string& name, hid_t type, const std::vector<hsize_t>& dims, const void* data) {
   Object space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
   if (space.id() < 0) throw Error("HDF5: cannot make the dataspace of " + name);
-  Object set(H5Dcreate2(loc, name.c_str(), type, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  // No modification times: the same analysis gives the same bytes.
+  Object dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  check(H5Pset_obj_track_times(dcpl.id(), false), "switch off times for " + name);
+  Object set(H5Dcreate2(loc, name.c_str(), type, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT), H5Dclose);
   if (set.id() < 0) throw Error("HDF5: cannot create dataset " + name);
   hsize_t total = 1;
   for (auto d : dims) total *= d;
