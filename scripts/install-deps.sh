@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libgtest-dev libtomlplusplus-dev libcli11-dev
           libfmt-dev libspdlog-dev libhdf5-dev libcairo2-dev ffmpeg python3 python3-numpy
-          python3-matplotlib python3-h5py
+          python3-matplotlib python3-h5py python3-xarray python3-h5netcdf
           python3-scipy python3-pandas libopenmpi-dev openmpi-bin)  # the last two: optional, `orogen ensemble` under mpirun
 missing=()
 for p in "${packages[@]}"; do

@@ -87,8 +87,10 @@ AnalysisState start(const AnalysisSettings& settings, const Config& config, doub
   p.closure = settings.closure;
   p.mean_radius = rsum / static_cast<double>(d.radius.size());
   p.column_width = config.get_float("layer.column_width_factor") * p.mean_radius;
-  // Material enters from the pro side and moves retro-ward: the grid spans the first layer.
-  p.x_lo = std::floor(*lo);
+  // Material enters from the pro side (tiles stamped beyond the active window, which moves
+  // pro-ward as the wedge widens) and moves retro-ward at v: the grid reaches s_end + one tile
+  // length pro-ward of the first layer.
+  p.x_lo = std::floor(*lo - (config.get_float("wedge.s_end") + config.get_float("wedge.tile_length")) * h0);
   const double x_hi = std::max(*hi, config.get_float("wedge.retro_length") * h0) + 1.0;
   p.n_columns = static_cast<std::size_t>(std::ceil((x_hi - p.x_lo) / p.column_width));
   p.particle_stride = settings.particle_stride;
