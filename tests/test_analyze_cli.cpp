@@ -124,7 +124,7 @@ TEST_F(AnalyzeCli, BadInputIsRefusedAndChangesNothing) {
   expect_refused(run, " --closure-depths -0.1,0.3", "-0.1 is not positive");
   expect_refused(run, " --closure-depths 0.5,0.3", "not in strictly ascending order");
   expect_refused(run, " --closure-depths 0.5,1.2", "1.2 h0 is below the base of the layer");
-  expect_refused(run, " --closure-depths 0.5,x", "'x' is not a number");
+  expect_refused(run, " --closure-depths 0.5,x", "--closure-depths 0.5,x: not a comma-separated list of numbers");
   expect_refused(run, " --flux-window 0", "--flux-window 0");
 
   const fs::path packing = dir_ / "packing";
@@ -144,4 +144,37 @@ TEST_F(AnalyzeCli, BadInputIsRefusedAndChangesNothing) {
   fs::copy(run, lost, fs::copy_options::recursive);
   fs::resize_file(lost / "snapshots" / "output_000001.h5", 100);
   expect_refused(lost, "", "output 1 cannot be read");
+}
+
+TEST_F(AnalyzeCli, InRunAnalysisEqualsAnalyzeAfterwards) {
+  const fs::path run = dir_ / "run", copy = dir_ / "copy";
+  const std::string keys = " --set analysis.in_run=true --set analysis.closure_depths=0.2,0.6 --set analysis.flux_window=2";
+  // Killed after 3 outputs and resumed: the in-run analysis continues across the resume.
+  EXPECT_NE(orogen_cli("run --out '" + run.string() + "'" + kSmall + keys + " --abort-after-outputs 3", dir_).status, 0);
+  const Result resumed = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  ASSERT_TRUE(fs::exists(run / "analysis.h5"));
+  fs::copy(run, copy, fs::copy_options::recursive);
+  for (const char* f : kAnalysisFiles) fs::remove(copy / f);
+  fs::remove(copy / "analysis_state.bin");
+  const Result after = orogen_cli("analyze '" + copy.string() + "'", dir_);  // the run's [analysis] keys
+  ASSERT_EQ(after.status, 0) << after.err;
+  EXPECT_NE(after.out.find("7 outputs (7 new)"), std::string::npos) << after.out;
+  for (const char* f : kAnalysisFiles) EXPECT_EQ(slurp(run / f), slurp(copy / f)) << f;
+  EXPECT_NE(slurp(run / "analysis_columns.csv").find("surface_age_0.6"), std::string::npos);
+}
+
+TEST_F(AnalyzeCli, BadAnalysisKeysRefuseTheRun) {
+  const fs::path run = dir_ / "run";
+  const Result r = orogen_cli("run --out '" + run.string() + "'" + kSmall +
+                                  " --set analysis.in_run=true --set analysis.closure_depths=0.6,0.2",
+                              dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("analysis.closure_depths = 0.6,0.2: not in strictly ascending order"), std::string::npos) << r.err;
+  const Result packing = orogen_cli("run --out '" + (dir_ / "p").string() +
+                                        "' --set run.experiment=packing --set analysis.in_run=true",
+                                    dir_);
+  EXPECT_EQ(packing.status, 2);
+  EXPECT_NE(packing.err.find("analysis.in_run = true needs run.experiment = \"wedge\""), std::string::npos)
+      << packing.err;
 }

@@ -97,27 +97,30 @@ int main(int argc, char** argv) {
   ensemble_cmd->add_flag("--no-stats", ensemble.no_stats, "run the members only (python/ensemble_stats.py DIR later)");
 
   orogen::AnalyzeOptions analyze;
-  std::string analyze_dir, closure_text = "0.15,0.3,0.5,0.7,0.9";
+  std::string analyze_dir, closure_text;
+  int flux_window = 0, particle_stride = 0;
+  double steady_fraction = 0;
+  std::int64_t trajectory_output = 0;
   auto* analyze_cmd = app.add_subcommand("analyze", "exhumation analysis of a wedge run (finished or running): depths, "
                                                     "closure-depth ages, erosion, flux steady state (docs/exhumation.md)");
   analyze_cmd->add_option("dir", analyze_dir, "run folder")->required();
-  analyze_cmd->add_option("--closure-depths", closure_text, "closure depths h_i below the surface [h0], ascending, comma-separated")
-      ->capture_default_str();
-  analyze_cmd->add_option("--flux-window", analyze.settings.flux_window, "outputs averaged by the flux steady-state rule")
-      ->capture_default_str()
-      ->check(not_empty);
-  analyze_cmd->add_option("--steady-fraction", analyze.settings.steady_fraction,
-                          "averaged eroded flux / incoming flux v h0 that counts as steady")
-      ->capture_default_str()
-      ->check(not_empty);
-  analyze_cmd->add_option("--particle-stride", analyze.settings.particle_stride,
-                          "per-particle series keep the ids divisible by this (1: all)")
-      ->capture_default_str()
-      ->check(not_empty);
-  analyze_cmd->add_option("--trajectory-output", analyze.settings.trajectory_output,
-                          "trace back the surface particles of this output (-1: the last)")
-      ->capture_default_str()
-      ->check(not_empty);
+  auto* closure_opt = analyze_cmd->add_option(
+      "--closure-depths", closure_text,
+      "closure depths h_i below the surface [h0], ascending, comma-separated (default: the run's analysis.closure_depths)");
+  auto* window_opt = analyze_cmd->add_option("--flux-window", flux_window,
+                                             "outputs averaged by the flux steady-state rule (default: analysis.flux_window)")
+                         ->check(not_empty);
+  auto* fraction_opt = analyze_cmd->add_option("--steady-fraction", steady_fraction,
+                                               "averaged eroded flux / incoming flux v h0 that counts as steady "
+                                               "(default: analysis.steady_fraction)")
+                           ->check(not_empty);
+  auto* stride_opt = analyze_cmd->add_option("--particle-stride", particle_stride,
+                                             "per-particle series keep the ids divisible by this "
+                                             "(default: analysis.particle_stride)")
+                         ->check(not_empty);
+  auto* trajectory_opt = analyze_cmd->add_option("--trajectory-output", trajectory_output,
+                                                 "trace back the surface particles of this output (default -1: the last)")
+                             ->check(not_empty);
 
   bool markdown = false;
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
@@ -173,21 +176,18 @@ int main(int argc, char** argv) {
   }
   if (*analyze_cmd) {
     analyze.dir = analyze_dir;
-    analyze.settings.closure.clear();
-    std::string cell;
-    for (std::size_t at = 0; at <= closure_text.size(); ++at) {
-      if (at < closure_text.size() && closure_text[at] != ',') { cell += closure_text[at]; continue; }
-      std::size_t used = 0;
-      double value = 0;
-      try { value = std::stod(cell, &used); } catch (const std::exception&) { used = 0; }
-      if (cell.empty() || used != cell.size()) {
-        std::cerr << "error: --closure-depths " << closure_text << ": '" << cell
-                  << "' is not a number; give depths in h0, comma-separated, e.g. 0.15,0.3,0.5\n";
+    if (closure_opt->count() > 0) {
+      analyze.closure = orogen::parse_closure_depths(closure_text);
+      if (!analyze.closure) {
+        std::cerr << "error: --closure-depths " << closure_text
+                  << ": not a comma-separated list of numbers; give depths in h0, e.g. 0.15,0.3,0.5\n";
         return 2;
       }
-      analyze.settings.closure.push_back(value);
-      cell.clear();
     }
+    if (window_opt->count() > 0) analyze.flux_window = flux_window;
+    if (fraction_opt->count() > 0) analyze.steady_fraction = steady_fraction;
+    if (stride_opt->count() > 0) analyze.particle_stride = particle_stride;
+    if (trajectory_opt->count() > 0) analyze.trajectory_output = trajectory_output;
     return orogen::analyze_command(analyze);
   }
   render.dir = render_dir;

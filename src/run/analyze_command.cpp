@@ -107,9 +107,8 @@ bool same_settings(const AnalysisSettings& a, const AnalysisSettings& b) {
          a.particle_stride == b.particle_stride && a.trajectory_output == b.trajectory_output;
 }
 
-int analyze(const AnalyzeOptions& o) {
-  const fs::path& dir = o.dir;
-  if (const std::string e = analysis_settings_error(o.settings); !e.empty()) throw AnalyzeError(2, e);
+int analyze(const AnalyzeOptions& options) {
+  const fs::path& dir = options.dir;
   if (dir.empty() || !fs::is_directory(dir))
     throw AnalyzeError(2, fmt::format("{}: no such folder; analyze takes the folder of a wedge run", dir.string()));
   const fs::path index = dir / "snapshots.h5", config_path = dir / "config.toml";
@@ -122,6 +121,22 @@ int analyze(const AnalyzeOptions& o) {
   } catch (const std::exception& e) {
     throw AnalyzeError(2, fmt::format("{}: {}", config_path.string(), e.what()));
   }
+  // The run's [analysis] keys, then what the command line gives.
+  struct Settings : AnalyzeOptions {
+    AnalysisSettings settings;
+  } o;
+  static_cast<AnalyzeOptions&>(o) = options;
+  try {
+    o.settings = analysis_settings(*config);
+  } catch (const std::exception& e) {
+    throw AnalyzeError(2, fmt::format("{}: {}", config_path.string(), e.what()));
+  }
+  if (options.closure) o.settings.closure = *options.closure;
+  if (options.flux_window) o.settings.flux_window = *options.flux_window;
+  if (options.particle_stride) o.settings.particle_stride = *options.particle_stride;
+  if (options.steady_fraction) o.settings.steady_fraction = *options.steady_fraction;
+  if (options.trajectory_output) o.settings.trajectory_output = *options.trajectory_output;
+  if (const std::string e = analysis_settings_error(o.settings); !e.empty()) throw AnalyzeError(2, e);
   const std::string experiment = config->get_string("run.experiment");
   if (experiment != "wedge")
     throw AnalyzeError(2, fmt::format("{} is a {} run (run.experiment = \"{}\"); analyze takes a wedge run",
@@ -139,7 +154,7 @@ int analyze(const AnalyzeOptions& o) {
   const double h0 = h0_it->second;
   for (double h : o.settings.closure)
     if (h > config->get_float("layer.thickness") / h0 + 1e-12 || h > 1.0)
-      throw AnalyzeError(2, fmt::format("--closure-depths {}: {} h0 is below the base of the layer (thickness 1 h0); "
+      throw AnalyzeError(2, fmt::format("closure depths {}: {} h0 is below the base of the layer (thickness 1 h0); "
                                         "closure depths must lie within the layer",
                                         list(o.settings.closure), h));
   const auto id_it = meta.strings.find("run_identity");
@@ -192,14 +207,56 @@ int analyze(const AnalyzeOptions& o) {
 
 }  // namespace
 
-std::string analysis_settings_error(const AnalysisSettings& s) {
-  if (s.closure.empty()) return "--closure-depths is empty; give one or more depths in h0, e.g. 0.15,0.3,0.5";
+std::optional<std::vector<double>> parse_closure_depths(const std::string& text) {
+  std::vector<double> out;
+  std::string cell;
+  for (std::size_t at = 0; at <= text.size(); ++at) {
+    if (at < text.size() && text[at] != ',') {
+      cell += text[at];
+      continue;
+    }
+    std::size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(cell, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (cell.empty() || used != cell.size()) return std::nullopt;
+    out.push_back(value);
+    cell.clear();
+  }
+  return out;
+}
+
+AnalysisSettings analysis_settings(const Config& config) {
+  AnalysisSettings s;
+  const std::string& text = config.get_string("analysis.closure_depths");
+  const auto closure = parse_closure_depths(text);
+  if (!closure)
+    throw ConfigError(fmt::format("analysis.closure_depths = \"{}\": not a comma-separated list of numbers; give "
+                                  "depths in h0, e.g. \"0.15,0.3,0.5\"", text));
+  s.closure = *closure;
+  s.flux_window = config.get_int32("analysis.flux_window");
+  s.steady_fraction = config.get_float("analysis.steady_fraction");
+  s.particle_stride = config.get_int32("analysis.particle_stride");
+  if (const std::string e = analysis_settings_error(s, true); !e.empty()) throw ConfigError(e);
+  for (double h : s.closure)
+    if (h > 1.0)
+      throw ConfigError(fmt::format("analysis.closure_depths = \"{}\": {} h0 is below the base of the layer "
+                                    "(thickness 1 h0); closure depths must lie within the layer", text, h));
+  return s;
+}
+
+std::string analysis_settings_error(const AnalysisSettings& s, bool from_config) {
+  const std::string name = from_config ? "analysis.closure_depths =" : "--closure-depths";
+  if (s.closure.empty()) return name + " is empty; give one or more depths in h0, e.g. 0.15,0.3,0.5";
   for (std::size_t i = 0; i < s.closure.size(); ++i) {
     if (!(s.closure[i] > 0))
-      return fmt::format("--closure-depths {}: {} is not positive; closure depths are depths below the surface in "
-                         "h0, each in (0, 1]", list(s.closure), s.closure[i]);
+      return fmt::format("{} {}: {} is not positive; closure depths are depths below the surface in "
+                         "h0, each in (0, 1]", name, list(s.closure), s.closure[i]);
     if (i > 0 && !(s.closure[i] > s.closure[i - 1]))
-      return fmt::format("--closure-depths {}: not in strictly ascending order; list them shallowest first",
+      return fmt::format("{} {}: not in strictly ascending order; list them shallowest first", name,
                          list(s.closure));
   }
   if (s.flux_window < 1) return fmt::format("--flux-window {}: must be at least 1 output", s.flux_window);

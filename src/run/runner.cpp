@@ -19,6 +19,7 @@
 #include "io/csv_series.hpp"
 #include "io/snapshot_writer.hpp"
 #include "io/vtp_writer.hpp"
+#include "run/analyze_command.hpp"
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
 #include "run/run_folder.hpp"
@@ -60,7 +61,16 @@ class Run {
       : config_(config), dir_(std::move(dir)), exp_(std::move(experiment)),
         interval_(exp_->output_interval().value_or(config.get_float("output.interval"))),
         checkpoint_every_(config.get_int("output.checkpoint_every")),
-        write_vtp_(config.get_bool("output.vtp")), identity_(run_identity(config)) {}
+        write_vtp_(config.get_bool("output.vtp")), identity_(run_identity(config)) {
+    if (config.get_bool("analysis.in_run")) {
+      if (config.get_string("run.experiment") != "wedge")
+        throw ConfigError(fmt::format("analysis.in_run = true needs run.experiment = \"wedge\" (it is \"{}\"): the "
+                                      "exhumation analysis is of wedge runs",
+                                      config.get_string("run.experiment")));
+      analysis_settings(config);  // refuses bad [analysis] keys before anything is written
+      analyze_in_run_ = true;
+    }
+  }
 
   // Builds the initial state and writes nothing, so that errors found here (time.dt above the
   // stability limit) leave no files behind.
@@ -219,6 +229,15 @@ class Run {
     last_output_step_ = world_.step;
     exp_->after_output(world_);
     if (write_vtp_) write_pvd_file();
+    // The same incremental analysis as `orogen analyze DIR` afterwards: it reads only this
+    // output. A failure is logged and the run goes on (the analysis can be re-run later).
+    if (analyze_in_run_) {
+      AnalyzeOptions analysis;
+      analysis.dir = dir_;
+      analysis.quiet = true;
+      if (analyze_command(analysis) != 0)
+        if (auto log = spdlog::get("orogen")) log->warn("in-run analysis failed (see the error above); the run goes on");
+    }
     // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
     if (state_.outputs == abort_after_outputs_) std::_Exit(137);
   }
@@ -296,6 +315,7 @@ class Run {
   std::int64_t checkpoint_every_;
   bool write_vtp_;
   std::string identity_;
+  bool analyze_in_run_ = false;
   std::string checkpoint_config_;  // the configuration the loaded checkpoint was written with
   std::uint64_t last_output_step_ = 0;
   std::int64_t abort_after_outputs_ = 0;
