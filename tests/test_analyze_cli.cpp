@@ -93,6 +93,29 @@ TEST_F(AnalyzeCli, GrowingRunAnalysedTwiceEqualsOnceOnTheFinishedRun) {
   for (const char* f : kAnalysisFiles) EXPECT_EQ(before.at(f), slurp(run / f)) << f;
 }
 
+TEST_F(AnalyzeCli, OutputsNotYetCoveredByRemovalsWaitForTheNextCall) {
+  // A running run writes removals.csv just after each snapshot: an index one output ahead of
+  // removals.csv must not lose that output's erosion.
+  const fs::path run = dir_ / "run", copy = dir_ / "copy";
+  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "'" + kSmall, dir_).status, 0);
+  fs::copy(run, copy, fs::copy_options::recursive);
+  const std::string removals = slurp(run / "removals.csv");
+  const auto at = removals.find("# through_step: ");
+  ASSERT_NE(at, std::string::npos);
+  const auto end = removals.find(' ', at + 16);
+  std::string early = removals;
+  early.replace(at + 16, end - at - 16, "1");  // covers output 0 only (step 0)
+  std::ofstream(run / "removals.csv", std::ios::trunc) << early;
+  const Result first = orogen_cli("analyze '" + run.string() + "'", dir_);
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_NE(first.out.find("1 outputs (1 new)"), std::string::npos) << first.out;
+  std::ofstream(run / "removals.csv", std::ios::trunc) << removals;
+  const Result second = orogen_cli("analyze '" + run.string() + "'", dir_);
+  EXPECT_NE(second.out.find("7 outputs (6 new)"), std::string::npos) << second.out;
+  ASSERT_EQ(orogen_cli("analyze '" + copy.string() + "'", dir_).status, 0);
+  for (const char* f : kAnalysisFiles) EXPECT_EQ(slurp(run / f), slurp(copy / f)) << f;
+}
+
 TEST_F(AnalyzeCli, ReadsARunningRunWithoutTakingItsLock) {
   const fs::path run = dir_ / "run";
   ASSERT_EQ(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --set wedge.outputs=2", dir_).status, 0);

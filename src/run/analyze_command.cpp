@@ -36,15 +36,32 @@ std::string list(const std::vector<double>& v) {
   return s;
 }
 
+struct ErosionLog {
+  std::vector<ErosionEvent> events;
+  // Every removal up to this step is listed (the run writes removals.csv after an output's
+  // snapshot, so a running run's newest output may not be covered yet); -1: not said (older
+  // runs, or no file: everything up to now).
+  std::int64_t through_step = -1;
+};
+
 // removals.csv rows with reason "eroded" (step, time, id, cluster_id, x, y, reason).
-std::vector<ErosionEvent> read_erosion(const fs::path& path) {
-  std::vector<ErosionEvent> out;
+ErosionLog read_erosion(const fs::path& path) {
+  ErosionLog log;
+  auto& out = log.events;
   std::ifstream in(path);
-  if (!in) return out;  // a run that removed nothing yet may have none
+  if (!in) return log;  // a run that removed nothing yet may have none
   std::string line;
   int row = 0;
   while (std::getline(in, line)) {
     ++row;
+    if (line.starts_with("# through_step: ")) {
+      try {
+        log.through_step = std::stoll(line.substr(16));
+      } catch (const std::exception&) {
+        throw AnalyzeError(2, fmt::format("{} line {}: not a step: {}", path.string(), row, line));
+      }
+      continue;
+    }
     if (line.empty() || line[0] == '#' || line.starts_with("step,")) continue;
     std::vector<std::string> f;
     std::stringstream ss(line);
@@ -58,7 +75,7 @@ std::vector<ErosionEvent> read_erosion(const fs::path& path) {
       throw AnalyzeError(2, fmt::format("{} line {}: not a row of numbers: {}", path.string(), row, line));
     }
   }
-  return out;
+  return log;
 }
 
 OutputDiscs discs_of(const Snapshot& s) {
@@ -182,14 +199,16 @@ int analyze(const AnalyzeOptions& options) {
       if (!o.quiet) std::cerr << "note: " << state_path.string() << " not used (" << e.what() << "); starting over\n";
     }
   }
-  const std::vector<ErosionEvent> erosion = read_erosion(dir / "removals.csv");
+  // removals.csv after the index: it is never older than the outputs it says it covers.
+  const ErosionLog erosion = read_erosion(dir / "removals.csv");
   if (!state) state.emplace(start(o.settings, *config, h0, read(0), identity));
   const std::int64_t from = state->tracker.outputs_seen();
   for (std::int64_t k = from; k < count; ++k) {
     const Snapshot snap = read(k);
+    if (erosion.through_step >= 0 && snap.step > erosion.through_step) break;  // the next call takes it
     const std::int64_t prev = state->tracker.last_step();
     std::vector<ErosionEvent> now;
-    for (const auto& e : erosion)
+    for (const auto& e : erosion.events)
       if (e.step > prev && e.step <= snap.step) now.push_back(e);
     state->results.records.push_back(state->tracker.observe(discs_of(snap), now));
   }
@@ -201,7 +220,8 @@ int analyze(const AnalyzeOptions& options) {
   }
   if (!o.quiet)
     std::cout << fmt::format("analyze {}: {} outputs ({} new), {} eroded discs; analysis.h5 written\n", dir.string(),
-                             count, count - from, state->tracker.eroded().size());
+                             state->tracker.outputs_seen(), state->tracker.outputs_seen() - from,
+                             state->tracker.eroded().size());
   return 0;
 }
 

@@ -6,12 +6,14 @@
 
 namespace orogen {
 
-void write_removal_log(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals) {
+void write_removal_log(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals,
+                       std::uint64_t through_step) {
   static constexpr const char* kReasons[] = {"left_domain", "eroded", "other"};
   std::string text =
       "# particles removed from the model, one row each\n"
       "# step: time step of the removal; time: model time; id: disc id; cluster_id: -1 for a free disc\n"
-      "# x, y: position when removed [d]; reason: left_domain, eroded or other (trimming a packing)\n"
+      "# x, y: position when removed [d]; reason: left_domain, eroded or other (trimming a packing)\n" +
+      fmt::format("# through_step: {} (every removal up to this time step is listed)\n", through_step) +
       "step,time,id,cluster_id,x,y,reason\n";
   for (const auto& r : removals)
     text += fmt::format("{},{},{},{},{},{},{}\n", r.step, r.time, r.id, r.cluster_id, r.x, r.y,

@@ -124,7 +124,7 @@ class Run {
       if (!fs::remove(dir_ / vtp_name(k))) break;
     }
     if (write_vtp_) write_pvd_file();
-    write_removal_log(dir_ / "removals.csv", world_.removals);
+    write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
     log().info("resumed at step {} (t = {:.6g}) after output {}", world_.step, world_.time, state_.outputs - 1);
   }
 
@@ -223,7 +223,7 @@ class Run {
       write_vtp(dir_ / vtp_name(state_.outputs), frame);
     }
     series_->add_row(exp_->measure(world_));
-    write_removal_log(dir_ / "removals.csv", world_.removals);
+    write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
     state_.output_times.push_back(world_.time);
     ++state_.outputs;
     last_output_step_ = world_.step;
