@@ -171,7 +171,8 @@ TEST_F(AnalyzeCli, BadInputIsRefusedAndChangesNothing) {
 
 TEST_F(AnalyzeCli, InRunAnalysisEqualsAnalyzeAfterwards) {
   const fs::path run = dir_ / "run", copy = dir_ / "copy";
-  const std::string keys = " --set analysis.in_run=true --set analysis.closure_depths=0.2,0.6 --set analysis.flux_window=2";
+  const std::string keys = " --set analysis.in_run=true --set analysis.every=2 --set analysis.closure_depths=0.2,0.6"
+                           " --set analysis.flux_window=2";
   // Killed after 3 outputs and resumed: the in-run analysis continues across the resume.
   EXPECT_NE(orogen_cli("run --out '" + run.string() + "'" + kSmall + keys + " --abort-after-outputs 3", dir_).status, 0);
   const Result resumed = orogen_cli("run --resume '" + run.string() + "'", dir_);
@@ -194,6 +195,7 @@ TEST_F(AnalyzeCli, BadAnalysisKeysRefuseTheRun) {
                               dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("analysis.closure_depths = 0.6,0.2: not in strictly ascending order"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(run / "config.toml"));  // refused before the folder was claimed
   const Result packing = orogen_cli("run --out '" + (dir_ / "p").string() +
                                         "' --set run.experiment=packing --set analysis.in_run=true",
                                     dir_);

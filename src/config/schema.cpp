@@ -171,6 +171,9 @@ const std::vector<KeySpec>& schema() {
       boolean("analysis.in_run", false,
               "wedge runs: run the exhumation analysis (orogen analyze, docs/exhumation.md) after every output; "
               "the same files as orogen analyze afterwards"),
+      integer("analysis.every", 1, ge(1), le(1000000),
+              "with analysis.in_run, analyse after every this many outputs and at the end (each analysis "
+              "rewrites analysis.h5 whole: raise it for long runs)"),
       text("analysis.closure_depths", "0.15,0.3,0.5,0.7,0.9", {},
            "closure depths h_i below the surface, ascending, comma-separated, each in (0, 1] [h0]"),
       integer("analysis.flux_window", 10, ge(1), le(1000000), "outputs averaged by the flux steady-state rule"),

@@ -268,6 +268,15 @@ AnalysisSettings analysis_settings(const Config& config) {
   return s;
 }
 
+void check_in_run_analysis(const Config& config) {
+  if (!config.get_bool("analysis.in_run")) return;
+  if (config.get_string("run.experiment") != "wedge")
+    throw ConfigError(fmt::format("analysis.in_run = true needs run.experiment = \"wedge\" (it is \"{}\"): the "
+                                  "exhumation analysis is of wedge runs",
+                                  config.get_string("run.experiment")));
+  analysis_settings(config);
+}
+
 std::string analysis_settings_error(const AnalysisSettings& s, bool from_config) {
   const std::string name = from_config ? "analysis.closure_depths =" : "--closure-depths";
   if (s.closure.empty()) return name + " is empty; give one or more depths in h0, e.g. 0.15,0.3,0.5";

@@ -30,6 +30,10 @@ class Config;
 // analysis.closure_depths if it is not a list of numbers or the settings are bad.
 AnalysisSettings analysis_settings(const Config& config);
 
+// With analysis.in_run: throws ConfigError unless the run is a wedge and the [analysis]
+// keys are good.
+void check_in_run_analysis(const Config& config);
+
 // The settings' problems, one message naming the option (`--closure-depths` or, with
 // from_config, the key `analysis.closure_depths`), the value and what is allowed; empty if none.
 std::string analysis_settings_error(const AnalysisSettings& s, bool from_config = false);

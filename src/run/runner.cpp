@@ -61,16 +61,8 @@ class Run {
       : config_(config), dir_(std::move(dir)), exp_(std::move(experiment)),
         interval_(exp_->output_interval().value_or(config.get_float("output.interval"))),
         checkpoint_every_(config.get_int("output.checkpoint_every")),
-        write_vtp_(config.get_bool("output.vtp")), identity_(run_identity(config)) {
-    if (config.get_bool("analysis.in_run")) {
-      if (config.get_string("run.experiment") != "wedge")
-        throw ConfigError(fmt::format("analysis.in_run = true needs run.experiment = \"wedge\" (it is \"{}\"): the "
-                                      "exhumation analysis is of wedge runs",
-                                      config.get_string("run.experiment")));
-      analysis_settings(config);  // refuses bad [analysis] keys before anything is written
-      analyze_in_run_ = true;
-    }
-  }
+        write_vtp_(config.get_bool("output.vtp")), identity_(run_identity(config)),
+        analyze_in_run_(config.get_bool("analysis.in_run")), analyze_every_(config.get_int("analysis.every")) {}
 
   // Builds the initial state and writes nothing, so that errors found here (time.dt above the
   // stability limit) leave no files behind.
@@ -168,6 +160,7 @@ class Run {
     if (state_.output_times.empty() || world_.step != last_output_step_) output();
     exp_->finish(world_, dir_);
     write_summary();
+    if (analyze_in_run_) analyze();  // the outputs since the last analysis.every
     state_.finished = true;
     checkpoint();
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -229,17 +222,19 @@ class Run {
     last_output_step_ = world_.step;
     exp_->after_output(world_);
     if (write_vtp_) write_pvd_file();
-    // The same incremental analysis as `orogen analyze DIR` afterwards: it reads only this
-    // output. A failure is logged and the run goes on (the analysis can be re-run later).
-    if (analyze_in_run_) {
-      AnalyzeOptions analysis;
-      analysis.dir = dir_;
-      analysis.quiet = true;
-      if (analyze_command(analysis) != 0)
-        if (auto log = spdlog::get("orogen")) log->warn("in-run analysis failed (see the error above); the run goes on");
-    }
+    if (analyze_in_run_ && state_.outputs % analyze_every_ == 0) analyze();
     // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
     if (state_.outputs == abort_after_outputs_) std::_Exit(137);
+  }
+
+  // The same incremental analysis as `orogen analyze DIR` afterwards: it reads only the
+  // outputs it has not seen. A failure is logged and the run goes on (it can be re-run later).
+  void analyze() {
+    AnalyzeOptions analysis;
+    analysis.dir = dir_;
+    analysis.quiet = true;
+    if (analyze_command(analysis) != 0)
+      if (auto log = spdlog::get("orogen")) log->warn("in-run analysis failed (see the error above); the run goes on");
   }
 
   // summary.csv: the series format with a single row, one column per result.
@@ -315,7 +310,8 @@ class Run {
   std::int64_t checkpoint_every_;
   bool write_vtp_;
   std::string identity_;
-  bool analyze_in_run_ = false;
+  bool analyze_in_run_;
+  std::int64_t analyze_every_;
   std::string checkpoint_config_;  // the configuration the loaded checkpoint was written with
   std::uint64_t last_output_step_ = 0;
   std::int64_t abort_after_outputs_ = 0;
@@ -387,6 +383,7 @@ int run_command(const RunOptions& opt) {
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
     auto experiment = make_experiment(config);
+    check_in_run_analysis(config);  // before the folder is claimed: a refusal leaves nothing
     const int threads = opt.threads >= 0 ? opt.threads : config.get_int32("run.threads");
     if (threads > 0) omp_set_num_threads(threads);
 
