@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libgtest-dev libtomlplusplus-dev libcli11-dev
           libfmt-dev libspdlog-dev libhdf5-dev libcairo2-dev ffmpeg python3 python3-numpy
-          python3-matplotlib python3-h5py
+          python3-matplotlib python3-h5py python3-xarray python3-h5netcdf  # xarray: analysis.h5 from Python
           lammps  # lmp: the export test reads the LAMMPS data file with it, the benchmark (bench/lammps) runs it
           python3-scipy python3-pandas libopenmpi-dev openmpi-bin  # the MPI pair: optional, `orogen ensemble` under mpirun
           python3-paraview xvfb xauth)  # the ParaView test (pvpython renders through X: xvfb-run)

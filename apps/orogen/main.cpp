@@ -7,6 +7,7 @@
 
 #include "config/config.hpp"
 #include "config/schema.hpp"
+#include "run/analyze_command.hpp"
 #include "run/ensemble_command.hpp"
 #include "run/export_command.hpp"
 #include "run/render_command.hpp"
@@ -113,6 +114,32 @@ int main(int argc, char** argv) {
   export_cmd->add_option("--format", export_opt.format, "lammps-data | lammps-dump | xyz | csv")->required();
   export_cmd->add_option("--to", export_to, "the file to write")->required();
 
+  orogen::AnalyzeOptions analyze;
+  std::string analyze_dir, closure_text;
+  int flux_window = 0, particle_stride = 0;
+  double steady_fraction = 0;
+  std::int64_t trajectory_output = 0;
+  auto* analyze_cmd = app.add_subcommand("analyze", "exhumation analysis of a wedge run (finished or running): depths, "
+                                                    "closure-depth ages, erosion, flux steady state (docs/exhumation.md)");
+  analyze_cmd->add_option("dir", analyze_dir, "run folder")->required();
+  auto* closure_opt = analyze_cmd->add_option(
+      "--closure-depths", closure_text,
+      "closure depths h_i below the surface [h0], ascending, comma-separated (default: the run's analysis.closure_depths)");
+  auto* window_opt = analyze_cmd->add_option("--flux-window", flux_window,
+                                             "outputs averaged by the flux steady-state rule (default: analysis.flux_window)")
+                         ->check(not_empty);
+  auto* fraction_opt = analyze_cmd->add_option("--steady-fraction", steady_fraction,
+                                               "averaged eroded flux / incoming flux v h0 that counts as steady "
+                                               "(default: analysis.steady_fraction)")
+                           ->check(not_empty);
+  auto* stride_opt = analyze_cmd->add_option("--particle-stride", particle_stride,
+                                             "per-particle series keep the ids divisible by this "
+                                             "(default: analysis.particle_stride)")
+                         ->check(not_empty);
+  auto* trajectory_opt = analyze_cmd->add_option("--trajectory-output", trajectory_output,
+                                                 "trace back the surface particles of this output (default -1: the last)")
+                             ->check(not_empty);
+
   bool markdown = false;
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
   config_cmd->add_flag("--markdown", markdown, "print the key reference as Markdown tables instead");
@@ -173,6 +200,22 @@ int main(int argc, char** argv) {
     export_opt.dir = export_dir;
     export_opt.to = export_to;
     return orogen::export_command(export_opt);
+  }
+  if (*analyze_cmd) {
+    analyze.dir = analyze_dir;
+    if (closure_opt->count() > 0) {
+      analyze.closure = orogen::parse_closure_depths(closure_text);
+      if (!analyze.closure) {
+        std::cerr << "error: --closure-depths " << closure_text
+                  << ": not a comma-separated list of numbers; give depths in h0, e.g. 0.15,0.3,0.5\n";
+        return 2;
+      }
+    }
+    if (window_opt->count() > 0) analyze.flux_window = flux_window;
+    if (fraction_opt->count() > 0) analyze.steady_fraction = steady_fraction;
+    if (stride_opt->count() > 0) analyze.particle_stride = particle_stride;
+    if (trajectory_opt->count() > 0) analyze.trajectory_output = trajectory_output;
+    return orogen::analyze_command(analyze);
   }
   render.dir = render_dir;
   render.animation = !no_animation;

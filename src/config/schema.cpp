@@ -168,6 +168,20 @@ const std::vector<KeySpec>& schema() {
            "removed per step against a rigid sample with one contact per d of wall; unstable "
            "from about 2.5 [-]"),
 
+      boolean("analysis.in_run", false,
+              "wedge runs: run the exhumation analysis (orogen analyze, docs/exhumation.md) after every output; "
+              "the same files as orogen analyze afterwards"),
+      integer("analysis.every", 1, ge(1), le(1000000),
+              "with analysis.in_run, analyse after every this many outputs and at the end (each analysis "
+              "rewrites analysis.h5 whole: raise it for long runs)"),
+      text("analysis.closure_depths", "0.15,0.3,0.5,0.7,0.9", {},
+           "closure depths h_i below the surface, ascending, comma-separated, each in (0, 1] [h0]"),
+      integer("analysis.flux_window", 10, ge(1), le(1000000), "outputs averaged by the flux steady-state rule"),
+      real("analysis.steady_fraction", 0.9, gt(0), none,
+           "averaged eroded flux / incoming flux v h0 at which the flux steady state is reached [-]"),
+      integer("analysis.particle_stride", 1, ge(1), le(1000000000),
+              "per-particle series in analysis.h5 keep the disc ids divisible by this (1: all)"),
+
       real("output.interval", 10.0, gt(0), none, "model time between output steps [sqrt(d/g)]"),
       integer("output.checkpoint_every", 10, ge(0), le(1000000),
               "write a checkpoint every this many output steps, 0 = only at the end"),

@@ -6,7 +6,8 @@
 
 namespace orogen {
 
-void write_removal_log(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals) {
+void write_removal_log(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals,
+                       std::uint64_t through_step) {
   static constexpr const char* kReasons[] = {"left_domain", "eroded", "other"};
   std::string text =
       "# particles removed from the model, one row each; lengths in d (model coordinates, not h0 from the "
@@ -17,7 +18,8 @@ void write_removal_log(const std::filesystem::path& path, const std::vector<Remo
       "# cluster_id: stable id of the disc's cluster, -1 for a free disc [-]\n"
       "# x: disc centre when removed, horizontal [d]\n"
       "# y: disc centre when removed, vertical [d]\n"
-      "# reason: left_domain, eroded or other (trimming a packing) [-]\n"
+      "# reason: left_domain, eroded or other (trimming a packing) [-]\n" +
+      fmt::format("# through_step: {} (every removal up to this time step is listed)\n", through_step) +
       "step,time,id,cluster_id,x,y,reason\n";
   for (const auto& r : removals)
     text += fmt::format("{},{},{},{},{},{},{}\n", r.step, r.time, r.id, r.cluster_id, r.x, r.y,

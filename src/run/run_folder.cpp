@@ -123,15 +123,19 @@ std::string config_differences(std::string_view here, std::string_view there, st
                        here_name, vb.empty() ? "(absent)" : vb, there_name);
   };
   for (const auto& [key, value] : a) {
-    if (is_extension_key(key)) continue;
+    if (is_extension_key(key) || is_analysis_key(key)) continue;
     const auto it = b.find(key);
     if (it == b.end()) add(key, value, "");
     else if (it->second != value) add(key, value, it->second);
   }
   for (const auto& [key, value] : b)
-    if (!a.contains(key) && !is_extension_key(key)) add(key, "", value);
+    if (!a.contains(key) && !is_extension_key(key) && !is_analysis_key(key)) add(key, "", value);
   return out;
 }
+
+// The [analysis] keys say only what is computed from the outputs, never what is simulated:
+// outside the identity, and free to differ between a checkpoint and config.toml.
+bool is_analysis_key(std::string_view key) { return key.starts_with("analysis."); }
 
 bool is_extension_key(std::string_view key) {
   return std::find(kExtensionKeys.begin(), kExtensionKeys.end(), key) != kExtensionKeys.end();
@@ -154,7 +158,7 @@ std::string run_identity(const Config& config) {
   std::string text;
   for (const auto& [key, value] : key_values(config.to_toml()))
     if (std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) == kKeysOutsideIdentity.end() &&
-        !is_extension_key(key))
+        !is_extension_key(key) && !is_analysis_key(key))
       text += key + "=" + value + "\n";
   return fmt::format("{:016x}", fnv1a64(text));
 }

@@ -62,6 +62,8 @@ std::map<std::string, std::string> key_values(std::string_view toml);
 // Keys a resume may change: they move a run's end and the spacing of its outputs, never what
 // it computes up to there (`orogen run --resume DIR --set wedge.s_end=30`).
 bool is_extension_key(std::string_view key);
+// The [analysis] keys: outside the run identity and free to change on a resume.
+bool is_analysis_key(std::string_view key);
 std::string extension_keys_text();  // "wedge.s_end, wedge.outputs"
 // "wedge.s_end 8.0 -> 16.0, ..." for the extension keys that differ from `before` to `now`.
 std::string extension_changes(std::string_view now, std::string_view before);

@@ -21,6 +21,7 @@
 #include "io/snapshot_reader.hpp"
 #include "io/snapshot_writer.hpp"
 #include "io/vtp_writer.hpp"
+#include "run/analyze_command.hpp"
 #include "run/branch_source.hpp"
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
@@ -75,7 +76,8 @@ class Run {
         interval_(exp_->output_interval().value_or(config.get_float("output.interval"))),
         checkpoint_every_(config.get_int("output.checkpoint_every")),
         write_vtp_(config.get_bool("output.vtp")), contact_output_(contact_output_options(config)),
-        identity_(run_identity(config)) {}
+        identity_(run_identity(config)), analyze_in_run_(config.get_bool("analysis.in_run")),
+        analyze_every_(config.get_int("analysis.every")) {}
 
   // Builds the initial state and writes nothing, so that errors found here (time.dt above the
   // stability limit) leave no files behind.
@@ -132,7 +134,7 @@ class Run {
       if (!fs::remove(dir_ / vtp_name(k))) break;
     }
     if (write_vtp_) write_pvd_file();
-    write_removal_log(dir_ / "removals.csv", world_.removals);
+    write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
     log().info("resumed at step {} (t = {:.6g}) after output {}", world_.step, world_.time, state_.outputs - 1);
   }
 
@@ -176,6 +178,7 @@ class Run {
     if (state_.output_times.empty() || world_.step != last_output_step_) output();
     exp_->finish(world_, dir_);
     write_summary();
+    if (analyze_in_run_) analyze();  // the outputs since the last analysis.every
     state_.finished = true;
     checkpoint();
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -295,15 +298,26 @@ class Run {
       write_vtp(dir_ / vtp_name(state_.outputs), frame);
     }
     series_->add_row(exp_->measure(world_));
-    write_removal_log(dir_ / "removals.csv", world_.removals);
+    write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
     state_.output_times.push_back(world_.time);
     ++state_.outputs;
     last_output_step_ = world_.step;
     if (!branch_start_) exp_->after_output(world_);  // a branch's state has seen its output already
     branch_start_ = false;
     if (write_vtp_) write_pvd_file();
+    if (analyze_in_run_ && state_.outputs % analyze_every_ == 0) analyze();
     // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
     if (state_.outputs == abort_after_outputs_) std::_Exit(137);
+  }
+
+  // The same incremental analysis as `orogen analyze DIR` afterwards: it reads only the
+  // outputs it has not seen. A failure is logged and the run goes on (it can be re-run later).
+  void analyze() {
+    AnalyzeOptions analysis;
+    analysis.dir = dir_;
+    analysis.quiet = true;
+    if (analyze_command(analysis) != 0)
+      if (auto log = spdlog::get("orogen")) log->warn("in-run analysis failed (see the error above); the run goes on");
   }
 
   // summary.csv: the series format with a single row, one column per result.
@@ -382,6 +396,8 @@ class Run {
   bool write_vtp_;
   ContactOutputOptions contact_output_;
   std::string identity_;
+  bool analyze_in_run_;
+  std::int64_t analyze_every_;
   std::string checkpoint_config_;  // the configuration the loaded checkpoint was written with
   std::uint64_t last_output_step_ = 0;
   std::int64_t abort_after_outputs_ = 0;
@@ -500,6 +516,7 @@ int run_command(const RunOptions& opt) {
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
     auto experiment = make_experiment(config);
+    check_in_run_analysis(config);  // before the folder is claimed: a refusal leaves nothing
     const int threads = opt.threads >= 0 ? opt.threads : config.get_int32("run.threads");
     if (threads > 0) omp_set_num_threads(threads);
 

@@ -1,0 +1,198 @@
+#!/usr/bin/python3
+"""All figures of the exhumation analysis (thesis chapter 6) of one wedge run, one command.
+
+Usage:
+    build/release/orogen analyze RUN_DIR
+    /usr/bin/python3 python/exhumation_charts.py RUN_DIR [--out DIR] [--closure 0.5]
+                                                 [--positions -1,0,1] [--frames 4]
+
+Reads RUN_DIR/analysis.h5 (python/orogen_analysis.py) and writes into DIR (default
+RUN_DIR/charts/exhumation), each file atomically (temporary name, then os.replace):
+
+    spacetime_elevation.png     x, time, coloured by elevation (thesis Figs 6.10, 6.11)
+    spacetime_max_depth.png     coloured by the maximum depth of the surface disc (6.12, 6.15)
+    spacetime_cum_erosion.png   coloured by cumulative eroded area per column (6.16)
+    spacetime_surface_age.png   coloured by surface age at the chosen closure depth (6.20, 6.21)
+    max_depth_positions.png     maximum depth of the surface disc through time at fixed x (6.13)
+    age_positions.png           surface age through time at fixed x (6.17)
+    age_jump_stats.png          surface age mean and spread, jump count and mean jump across x (6.18, 6.19)
+    trajectories.png            surface discs of the chosen output back in time, x against
+                                elevation and against depth, coloured by time, with isochrons (6.9)
+    horizon_frames.png          discs coloured by their starting elevation at a few outputs,
+                                with the area eroded per column so far (6.1-6.4)
+    flux.png                    eroded flux against the incoming flux v h0, steady output marked
+"""
+
+import argparse
+import os
+import sys
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import orogen_analysis  # noqa: E402
+
+FIGURES = ("spacetime_elevation.png", "spacetime_max_depth.png", "spacetime_cum_erosion.png",
+           "spacetime_surface_age.png", "max_depth_positions.png", "age_positions.png",
+           "age_jump_stats.png", "trajectories.png", "horizon_frames.png", "flux.png")
+
+
+def save(fig, out, name):
+    path = os.path.join(out, name)
+    tmp = os.path.join(out, "." + name + ".tmp.png")
+    fig.savefig(tmp, dpi=110)
+    plt.close(fig)
+    os.replace(tmp, path)
+
+
+def spacetime(ds, da, title, label, cmap, out, name):
+    fig, ax = plt.subplots(figsize=(8, 5))
+    m = ax.pcolormesh(ds.column.values, ds.S.values, np.ma.masked_invalid(da.values), shading="nearest", cmap=cmap)
+    fig.colorbar(m, ax=ax, label=label)
+    ax.set_xlabel("x from the S-point [h0]")
+    ax.set_ylabel("S = v t / h0")
+    ax.set_title(title)
+    save(fig, out, name)
+
+
+def through_time(ds, da, xs, ylabel, title, out, name):
+    fig, ax = plt.subplots(figsize=(8, 4))
+    for x in xs:
+        series = da.sel(column=x, method="nearest")
+        ax.plot(ds.S.values, series.values, label="x = %.2f h0" % float(series.column))
+    ax.set_xlabel("S = v t / h0")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    save(fig, out, name)
+
+
+def trajectories(ds, out, every):
+    fig, axes = plt.subplots(2, 1, figsize=(8, 8), sharex=True)
+    s = ds.S.values
+    tx, ty, td = ds.trajectory_x.values, ds.trajectory_y.values, ds.trajectory_depth.values
+    for ax, v, label in ((axes[0], ty, "elevation [h0]"), (axes[1], td, "depth below the surface [h0]")):
+        for j in range(tx.shape[1]):
+            ax.plot(tx[:, j], v[:, j], color="0.8", lw=0.5, zorder=1)
+        sc = ax.scatter(tx.ravel(), v.ravel(), c=np.repeat(s, tx.shape[1]), s=3, cmap="viridis", zorder=2)
+        for k in range(0, len(s), every):  # isochrons: the discs at one output joined along x
+            order = np.argsort(tx[k])
+            ax.plot(tx[k][order], v[k][order], color="k", lw=0.6, zorder=3)
+        ax.set_ylabel(label)
+        fig.colorbar(sc, ax=ax, label="S")
+    axes[1].invert_yaxis()
+    axes[1].set_xlabel("x from the S-point [h0]")
+    axes[0].set_title("surface discs of output %d back in time; black: isochrons" % int(ds.attrs["trajectory_output"]))
+    save(fig, out, "trajectories.png")
+
+
+def horizon_frames(ds, out, frames):
+    nt = ds.sizes["time"]
+    picks = sorted(set(int(round(k)) for k in np.linspace(0, nt - 1, frames)))
+    fig, axes = plt.subplots(len(picks), 1, figsize=(9, 2.2 * len(picks)), sharex=True, squeeze=False)
+    ys = ds.y.values
+    seen = np.isfinite(ys)
+    first_y = ys[np.argmax(seen, axis=0), np.arange(ys.shape[1])]  # each disc's elevation when first seen
+    for ax, k in zip(axes[:, 0], picks):
+        x, y = ds.x.isel(time=k).values, ds.y.isel(time=k).values
+        ok = np.isfinite(x)
+        ax.scatter(x[ok], y[ok], c=np.floor(first_y[ok] * 5) % 2, s=2, cmap="coolwarm")
+        area = ds.cum_eroded_area.isel(time=k).values
+        width = float(ds.column[1] - ds.column[0]) if ds.sizes["column"] > 1 else 1.0
+        h0 = float(ds.attrs["h0"])
+        ax.bar(ds.column.values, area / (width * h0 * h0), bottom=np.nan_to_num(ds.elevation.isel(time=k).values),
+               width=width, color="tab:orange", alpha=0.5)
+        ax.set_ylabel("y [h0]")
+        ax.set_title("S = %.2f: horizons (bands of starting elevation); orange: eroded area as a height" %
+                     float(ds.S[k]), fontsize=9)
+    axes[-1, 0].set_xlabel("x from the S-point [h0]")
+    save(fig, out, "horizon_frames.png")
+
+
+def flux(ds, out):
+    fig, ax = plt.subplots(figsize=(8, 4))
+    ax.plot(ds.S.values, ds.flux_out.values, color="0.6", lw=0.8, label="eroded flux")
+    ax.plot(ds.S.values, ds.flux_out_mean.values, color="tab:red",
+            label="eroded flux, mean of %d outputs" % int(ds.attrs["flux_window"]))
+    ax.axhline(float(ds.attrs["flux_in"]), color="k", label="incoming flux v h0 phi0")
+    k = orogen_analysis.steady_output(ds)
+    if k is not None:
+        ax.axvline(float(ds.S[k]), color="tab:blue", ls="--", label="steady state (output %d)" % k)
+    ax.set_xlabel("S = v t / h0")
+    ax.set_ylabel("flux [d^2 / sqrt(d/g)]")
+    ax.legend(fontsize=8)
+    save(fig, out, "flux.png")
+
+
+def age_jump_stats(ds, ci, out):
+    stats = orogen_analysis.surface_age_stats(ds)
+    fig, axes = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
+    x = ds.column.values
+    axes[0].errorbar(x, stats["mean"].isel(closure=ci).values, yerr=stats["std"].isel(closure=ci).values, fmt=".")
+    axes[0].set_ylabel("surface age [sqrt(d/g)]")
+    axes[1].plot(x, ds.jump_count.isel(time=-1, closure=ci).values, ".")
+    axes[1].set_ylabel("jump count")
+    axes[2].plot(x, orogen_analysis.jump_mean_final(ds).isel(closure=ci).values, ".")
+    axes[2].set_ylabel("mean jump [sqrt(d/g)]")
+    axes[2].set_xlabel("x from the S-point [h0]")
+    axes[0].set_title("closure depth %.2f h0" % float(ds.closure[ci]))
+    save(fig, out, "age_jump_stats.png")
+
+
+def make_all(run, out=None, closure=0.5, positions=None, frames=4):
+    ds = orogen_analysis.load(run)
+    out = out or os.path.join(run if os.path.isdir(run) else os.path.dirname(run), "charts", "exhumation")
+    os.makedirs(out, exist_ok=True)
+    ci = int(np.argmin(np.abs(ds.closure.values - closure)))
+    xs = positions if positions is not None else list(np.percentile(ds.column.values, [40, 55, 70]))
+    spacetime(ds, ds.elevation, "elevation", "elevation [h0]", "terrain", out, "spacetime_elevation.png")
+    spacetime(ds, ds.surface_max_depth, "maximum depth of the surface disc", "max depth [h0]", "magma", out,
+              "spacetime_max_depth.png")
+    spacetime(ds, ds.cum_eroded_area, "cumulative erosion", "eroded area [d^2]", "viridis", out,
+              "spacetime_cum_erosion.png")
+    spacetime(ds, ds.surface_age.isel(closure=ci), "surface age, closure depth %.2f h0" % float(ds.closure[ci]),
+              "age [sqrt(d/g)]", "cividis", out, "spacetime_surface_age.png")
+    through_time(ds, ds.surface_max_depth, xs, "max depth of the surface disc [h0]",
+                 "maximum depth at fixed positions", out, "max_depth_positions.png")
+    through_time(ds, ds.surface_age.isel(closure=ci), xs, "surface age [sqrt(d/g)]",
+                 "surface age at fixed positions (closure %.2f h0)" % float(ds.closure[ci]), out, "age_positions.png")
+    age_jump_stats(ds, ci, out)
+    trajectories(ds, out, max(1, ds.sizes["time"] // 8))
+    horizon_frames(ds, out, frames)
+    flux(ds, out)
+    return out
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("run", help="run folder holding analysis.h5 (orogen analyze), or the file")
+    p.add_argument("--out", help="output folder (default RUN/charts/exhumation)")
+    p.add_argument("--closure", type=float, default=0.5, help="closure depth [h0] of the age figures (nearest)")
+    p.add_argument("--positions", help="x values [h0] of the through-time figures, comma-separated")
+    p.add_argument("--frames", type=int, default=4, help="outputs in horizon_frames.png")
+    a = p.parse_args(argv)
+    path = orogen_analysis.analysis_path(a.run)
+    if not os.path.isfile(path):
+        print("error: %s not found: run `orogen analyze %s` first" % (path, a.run), file=sys.stderr)
+        return 2
+    positions = None
+    if a.positions:
+        try:
+            positions = [float(v) for v in a.positions.split(",")]
+        except ValueError:
+            print("error: --positions %s: not a comma-separated list of numbers" % a.positions, file=sys.stderr)
+            return 2
+    if a.frames < 1:
+        print("error: --frames %d: must be at least 1" % a.frames, file=sys.stderr)
+        return 2
+    out = make_all(a.run, a.out, a.closure, positions, a.frames)
+    print("wrote %d figures to %s" % (len(FIGURES), out))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

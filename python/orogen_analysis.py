@@ -1,0 +1,54 @@
+#!/usr/bin/python3
+"""Loader of `orogen analyze` results (docs/exhumation.md, docs/output-files.md).
+
+    import orogen_analysis
+    ds = orogen_analysis.load("runs/E5")        # the run folder or its analysis.h5
+    ds.elevation.sel(column=2.0, method="nearest").plot()
+
+`load` returns an xarray.Dataset with the dimensions time, column, closure, particle,
+trajectory and removal; every variable carries `units` and `description` attributes. The
+helpers below return xarray objects too. Needs python3-xarray and python3-h5netcdf (Debian).
+"""
+
+import os
+import warnings
+
+import numpy as np
+import xarray as xr
+
+
+def analysis_path(path):
+    """The analysis.h5 of a run folder, or the path itself if it is a file."""
+    return os.path.join(path, "analysis.h5") if os.path.isdir(path) else path
+
+
+def load(path):
+    """The whole analysis as an xarray.Dataset (loaded into memory; the file is closed)."""
+    with xr.open_dataset(analysis_path(path), engine="h5netcdf") as ds:
+        return ds.load()
+
+
+def steady_output(ds):
+    """Index of the flux steady-state output, or None if not reached."""
+    k = int(ds.attrs["steady_output"])
+    return None if k < 0 else k
+
+
+def jump_mean_final(ds):
+    """Per closure depth and column: the mean jump size up to the last output (NaN: no jump)."""
+    return ds.jump_mean.isel(time=-1)
+
+
+def surface_age_stats(ds, after=None):
+    """Mean and standard deviation of surface age per closure depth and column over the
+    outputs from `after` on (default: the steady output, or all outputs if none)."""
+    start = steady_output(ds) if after is None else after
+    sub = ds.surface_age.isel(time=slice(start or 0, None))
+    with warnings.catch_warnings():  # columns empty at every output give NaN, as they should
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return xr.Dataset({"mean": sub.mean("time"), "std": sub.std("time")})
+
+
+def at_positions(da, xs):
+    """`da` (time x column) at the columns nearest to the x values `xs` [h0]."""
+    return da.sel(column=np.asarray(xs, dtype=float), method="nearest")

@@ -1,0 +1,77 @@
+"""Tests of python/orogen_analysis.py and python/exhumation_charts.py on a tiny eroding wedge
+run analysed by `orogen analyze` (OROGEN_BINARY, set by CTest; skipped without it).
+
+Run from the repository root:
+    OROGEN_BINARY=build/release/orogen /usr/bin/python3 -m unittest tests/python/test_exhumation_charts.py
+"""
+
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(REPO, "python"))
+import orogen_analysis  # noqa: E402
+import exhumation_charts  # noqa: E402
+
+BINARY = os.environ.get("OROGEN_BINARY", "")
+SMALL = ("layer.thickness=5 wedge.tile_length=4 wedge.retro_length=4 wedge.initial_active=4 wedge.window=3 "
+         "wedge.s_end=0.3 wedge.outputs=6 wedge.erosion_height=0.9 output.progress=never output.vtp=false").split()
+
+
+@unittest.skipUnless(BINARY and os.path.exists(BINARY), "OROGEN_BINARY not set")
+class ExhumationCharts(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="orogen_exhumation_charts_")
+        cls.run_dir = os.path.join(cls.tmp, "run")
+        args = [BINARY, "run", "--out", cls.run_dir, "--threads", "1"]
+        for kv in SMALL:
+            args += ["--set", kv]
+        subprocess.run(args, check=True, capture_output=True)
+        subprocess.run([BINARY, "analyze", cls.run_dir], check=True, capture_output=True)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp)
+
+    def test_loader_gives_labelled_dataset(self):
+        ds = orogen_analysis.load(self.run_dir)
+        self.assertEqual(ds.sizes["time"], 7)
+        self.assertEqual(ds.sizes["closure"], 5)
+        self.assertEqual(ds.elevation.dims, ("time", "column"))
+        self.assertEqual(ds.age.dims, ("time", "closure", "particle"))
+        for name, var in ds.variables.items():
+            self.assertIn("units", var.attrs, name)
+            self.assertIn("description", var.attrs, name)
+        # The disc at the surface has depth = its radius: the smallest depths, all positive.
+        depth = ds.depth.values
+        self.assertTrue(np.nanmin(depth) > 0)
+        # Cumulative erosion never falls, and sums to the eroded discs.
+        cum = ds.cum_eroded_count.values
+        self.assertTrue((np.diff(cum, axis=0) >= 0).all())
+        self.assertEqual(int(cum[-1].sum()), int((ds.removal_column.values >= 0).sum()))
+        self.assertEqual(int(ds.eroded_count.sum()), ds.sizes["removal"])
+        ages = orogen_analysis.at_positions(ds.surface_age.isel(closure=0), [0.0])
+        self.assertEqual(ages.dims, ("time", "column"))
+
+    def test_all_figures_in_one_command(self):
+        out = os.path.join(self.tmp, "charts")
+        self.assertEqual(exhumation_charts.main([self.run_dir, "--out", out]), 0)
+        for name in exhumation_charts.FIGURES:
+            path = os.path.join(out, name)
+            self.assertTrue(os.path.getsize(path) > 1000, name)
+        self.assertEqual([f for f in os.listdir(out) if f.startswith(".")], [])
+
+    def test_refuses_a_folder_without_analysis(self):
+        self.assertEqual(exhumation_charts.main([self.tmp]), 2)
+        self.assertEqual(exhumation_charts.main([self.run_dir, "--positions", "a,b", "--out", self.tmp]), 2)
+
+
+if __name__ == "__main__":
+    unittest.main()

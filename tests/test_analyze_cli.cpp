@@ -1,0 +1,205 @@
+// `orogen analyze` end to end on tiny eroding wedge runs: a growing run analysed twice gives
+// what one analysis of the finished run gives, a running run (lock held) is read without
+// waiting, and bad input is refused with exit 2 leaving every file of the run as it was.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "temp_dir_fixture.hpp"
+
+namespace fs = std::filesystem;
+using orogen::testing::slurp;
+
+namespace {
+
+class AnalyzeCli : public orogen::testing::TempDirTest {};
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+Result orogen_cli(const std::string& args, const fs::path& scratch) {
+  const fs::path out = scratch / "stdout", err = scratch / "stderr";
+  std::string cmd = "'";
+  cmd += OROGEN_BINARY;
+  cmd += "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.out = slurp(out);
+  r.err = slurp(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+// A wedge run of a few hundred discs that erodes from the start (about a second).
+const std::string kSmall =
+    " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
+    " --set wedge.window=3 --set wedge.s_end=0.3 --set wedge.outputs=6 --set wedge.erosion_height=0.9"
+    " --set output.checkpoint_every=1 --set output.progress=never --set output.vtp=false --threads 1";
+
+// Every file under `dir` with its bytes.
+std::map<std::string, std::string> contents(const fs::path& dir) {
+  std::map<std::string, std::string> m;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) m[fs::relative(e.path(), dir).string()] = slurp(e.path());
+  return m;
+}
+
+const char* kAnalysisFiles[] = {"analysis.h5", "analysis_flux.csv", "analysis_columns.csv", "analysis_removals.csv"};
+
+}  // namespace
+
+TEST_F(AnalyzeCli, GrowingRunAnalysedTwiceEqualsOnceOnTheFinishedRun) {
+  const fs::path run = dir_ / "run", copy = dir_ / "copy";
+  EXPECT_NE(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --abort-after-outputs 3", dir_).status, 0);
+  const Result first = orogen_cli("analyze '" + run.string() + "'", dir_);
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_NE(first.out.find("(3 new)"), std::string::npos) << first.out;
+  ASSERT_EQ(orogen_cli("run --resume '" + run.string() + "'", dir_).status, 0);
+  const Result second = orogen_cli("analyze '" + run.string() + "'", dir_);
+  ASSERT_EQ(second.status, 0) << second.err;
+  EXPECT_NE(second.out.find("7 outputs (4 new)"), std::string::npos) << second.out;
+
+  fs::copy(run, copy, fs::copy_options::recursive);
+  for (const char* f : kAnalysisFiles) fs::remove(copy / f);
+  fs::remove(copy / "analysis_state.bin");
+  const Result once = orogen_cli("analyze '" + copy.string() + "'", dir_);
+  ASSERT_EQ(once.status, 0) << once.err;
+  EXPECT_NE(once.out.find("(7 new)"), std::string::npos) << once.out;
+  for (const char* f : kAnalysisFiles) EXPECT_EQ(slurp(run / f), slurp(copy / f)) << f;
+  EXPECT_NE(slurp(copy / "analysis_removals.csv").find("\n"), std::string::npos);
+  // The run eroded, and the analysis saw it.
+  EXPECT_NE(slurp(run / "removals.csv").find("eroded"), std::string::npos);
+  const std::string removals = slurp(run / "analysis_removals.csv");
+  EXPECT_GT(std::count(removals.begin(), removals.end(), '\n'), 3);
+
+  // Nothing new: a third call adds nothing and changes nothing.
+  const auto before = contents(run);
+  const Result third = orogen_cli("analyze '" + run.string() + "'", dir_);
+  ASSERT_EQ(third.status, 0) << third.err;
+  EXPECT_NE(third.out.find("(0 new)"), std::string::npos) << third.out;
+  for (const char* f : kAnalysisFiles) EXPECT_EQ(before.at(f), slurp(run / f)) << f;
+}
+
+TEST_F(AnalyzeCli, OutputsNotYetCoveredByRemovalsWaitForTheNextCall) {
+  // A running run writes removals.csv just after each snapshot: an index one output ahead of
+  // removals.csv must not lose that output's erosion.
+  const fs::path run = dir_ / "run", copy = dir_ / "copy";
+  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "'" + kSmall, dir_).status, 0);
+  fs::copy(run, copy, fs::copy_options::recursive);
+  const std::string removals = slurp(run / "removals.csv");
+  const auto at = removals.find("# through_step: ");
+  ASSERT_NE(at, std::string::npos);
+  const auto end = removals.find(' ', at + 16);
+  std::string early = removals;
+  early.replace(at + 16, end - at - 16, "1");  // covers output 0 only (step 0)
+  std::ofstream(run / "removals.csv", std::ios::trunc) << early;
+  const Result first = orogen_cli("analyze '" + run.string() + "'", dir_);
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_NE(first.out.find("1 outputs (1 new)"), std::string::npos) << first.out;
+  std::ofstream(run / "removals.csv", std::ios::trunc) << removals;
+  const Result second = orogen_cli("analyze '" + run.string() + "'", dir_);
+  EXPECT_NE(second.out.find("7 outputs (6 new)"), std::string::npos) << second.out;
+  ASSERT_EQ(orogen_cli("analyze '" + copy.string() + "'", dir_).status, 0);
+  for (const char* f : kAnalysisFiles) EXPECT_EQ(slurp(run / f), slurp(copy / f)) << f;
+}
+
+TEST_F(AnalyzeCli, ReadsARunningRunWithoutTakingItsLock) {
+  const fs::path run = dir_ / "run";
+  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --set wedge.outputs=2", dir_).status, 0);
+  const int fd = ::open((run / "run.lock").c_str(), O_RDWR);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as the running process holds it
+  const Result r = orogen_cli("analyze '" + run.string() + "'", dir_);
+  ::close(fd);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(run / "analysis.h5"));
+}
+
+TEST_F(AnalyzeCli, BadInputIsRefusedAndChangesNothing) {
+  const fs::path run = dir_ / "run";
+  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --set wedge.outputs=2", dir_).status, 0);
+  const auto expect_refused = [&](const fs::path& dir, const std::string& options, const std::string& named) {
+    const auto before = fs::exists(dir) ? contents(dir) : std::map<std::string, std::string>{};
+    const Result r = orogen_cli("analyze '" + dir.string() + "'" + options, dir_);
+    EXPECT_EQ(r.status, 2) << options << ": " << r.err;
+    EXPECT_NE(r.err.find(named), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+    if (fs::exists(dir)) {
+      EXPECT_EQ(contents(dir), before) << options;
+    }
+  };
+  expect_refused(dir_ / "missing", "", "no such folder");
+  fs::create_directories(dir_ / "empty");
+  expect_refused(dir_ / "empty", "", "is not a run folder");
+  expect_refused(run, " --closure-depths -0.1,0.3", "-0.1 is not positive");
+  expect_refused(run, " --closure-depths 0.5,0.3", "not in strictly ascending order");
+  expect_refused(run, " --closure-depths 0.5,1.2", "1.2 h0 is below the base of the layer");
+  expect_refused(run, " --closure-depths 0.5,x", "--closure-depths 0.5,x: not a comma-separated list of numbers");
+  expect_refused(run, " --flux-window 0", "--flux-window 0");
+
+  const fs::path packing = dir_ / "packing";
+  fs::copy(run, packing, fs::copy_options::recursive);
+  std::string config = slurp(packing / "config.toml");
+  const auto at = config.find("experiment = \"wedge\"");
+  ASSERT_NE(at, std::string::npos);
+  config.replace(at, 20, "experiment = \"packing\"");
+  std::ofstream(packing / "config.toml") << config;
+  expect_refused(packing, "", "is a packing run");
+
+  const fs::path broken = dir_ / "broken";
+  fs::copy(run, broken, fs::copy_options::recursive);
+  fs::resize_file(broken / "snapshots.h5", fs::file_size(broken / "snapshots.h5") / 2);
+  expect_refused(broken, "", "snapshots.h5");
+  const fs::path lost = dir_ / "lost";
+  fs::copy(run, lost, fs::copy_options::recursive);
+  fs::resize_file(lost / "snapshots" / "output_000001.h5", 100);
+  expect_refused(lost, "", "output 1 cannot be read");
+}
+
+TEST_F(AnalyzeCli, InRunAnalysisEqualsAnalyzeAfterwards) {
+  const fs::path run = dir_ / "run", copy = dir_ / "copy";
+  const std::string keys = " --set analysis.in_run=true --set analysis.every=2 --set analysis.closure_depths=0.2,0.6"
+                           " --set analysis.flux_window=2";
+  // Killed after 3 outputs and resumed: the in-run analysis continues across the resume.
+  EXPECT_NE(orogen_cli("run --out '" + run.string() + "'" + kSmall + keys + " --abort-after-outputs 3", dir_).status, 0);
+  const Result resumed = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  ASSERT_TRUE(fs::exists(run / "analysis.h5"));
+  fs::copy(run, copy, fs::copy_options::recursive);
+  for (const char* f : kAnalysisFiles) fs::remove(copy / f);
+  fs::remove(copy / "analysis_state.bin");
+  const Result after = orogen_cli("analyze '" + copy.string() + "'", dir_);  // the run's [analysis] keys
+  ASSERT_EQ(after.status, 0) << after.err;
+  EXPECT_NE(after.out.find("7 outputs (7 new)"), std::string::npos) << after.out;
+  for (const char* f : kAnalysisFiles) EXPECT_EQ(slurp(run / f), slurp(copy / f)) << f;
+  EXPECT_NE(slurp(run / "analysis_columns.csv").find("surface_age_0.6"), std::string::npos);
+}
+
+TEST_F(AnalyzeCli, BadAnalysisKeysRefuseTheRun) {
+  const fs::path run = dir_ / "run";
+  const Result r = orogen_cli("run --out '" + run.string() + "'" + kSmall +
+                                  " --set analysis.in_run=true --set analysis.closure_depths=0.6,0.2",
+                              dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("analysis.closure_depths = 0.6,0.2: not in strictly ascending order"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(run / "config.toml"));  // refused before the folder was claimed
+  const Result packing = orogen_cli("run --out '" + (dir_ / "p").string() +
+                                        "' --set run.experiment=packing --set analysis.in_run=true",
+                                    dir_);
+  EXPECT_EQ(packing.status, 2);
+  EXPECT_NE(packing.err.find("analysis.in_run = true needs run.experiment = \"wedge\""), std::string::npos)
+      << packing.err;
+}
