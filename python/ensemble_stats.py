@@ -283,7 +283,8 @@ def aggregate(out, title, members, stats):
                    [("S", "normalised convergence [h0]"), ("H_mean", "mean measured height [h0]"),
                     ("H_simple", "sqrt(2 tan(alpha) tan(beta) / (tan(alpha) + tan(beta)) S) [h0]"),
                     ("ratio", "H_mean / H_simple")],
-                   [[a, b, cc, (a / cc if cc > 0 else float("nan"))] for a, b, cc in zip(s, mean["H"], h_sm)]))
+                   [[s_k, h_k, sm_k, (h_k / sm_k if sm_k > 0 else float("nan"))]
+                    for s_k, h_k, sm_k in zip(s, mean["H"], h_sm)]))
 
     tr_cols = [("S", "normalised convergence [h0]")]
     tr_data = [s]

@@ -52,6 +52,9 @@ class Experiment {
   // Experiment state beyond the World, for checkpoints.
   virtual void save(ArchiveWriter& out) const = 0;
   virtual void load(const ArchiveReader& in) = 0;
+  // A branch (orogen run --from) has loaded another run's state: put this run's values of the
+  // keys a branch may change back where the state holds them (a wedge's basal friction).
+  virtual void adopt_branch_config(World&) const {}
   // Work after the last step (e.g. writing the packing file).
   virtual void finish(World&, const std::filesystem::path& /*out_dir*/) {}
   // The run's results, written to summary.csv after finish() (none: no file).

@@ -288,6 +288,13 @@ void WedgeExperiment::load(const ArchiveReader& in) {
   history_.load(in, "wedge");
 }
 
+void WedgeExperiment::adopt_branch_config(World& w) const {
+  for (Wall& wall : w.walls) {
+    if (wall.name == "pro_base") wall.mu = spec_.mu_bp;
+    if (wall.name == "retro_base") wall.mu = spec_.mu_br;
+  }
+}
+
 std::string WedgeExperiment::status(const World& w) const {
   std::size_t active = 0;
   for (std::size_t i = 0; i < w.discs.size(); ++i) active += w.discs.is_dynamic(i);

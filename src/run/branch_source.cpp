@@ -15,14 +15,16 @@ namespace fs = std::filesystem;
 namespace orogen {
 namespace {
 
-// Keys a branch may change: they act on the state as it is (friction between discs, erosion,
-// the end and spacing of outputs, speed and display). Every other key shaped the stored state
-// (packing, particles, walls, time step) or is baked into it (basal friction sits in the
-// walls), so changing it would not continue that state.
-constexpr std::array<std::string_view, 11> kBranchKeys = {
-    "contact.mu",      "wedge.erosion_height", "wedge.erosion_every", "wedge.s_end",
-    "wedge.outputs",   "run.threads",          "run.adapt_threads",   "run.adapt_slice",
-    "output.progress", "output.vtp",           "output.checkpoint_every"};
+// Keys a branch may change: they act on the state as it is (friction between discs and on the
+// bases, erosion, the end and spacing of outputs, speed and display). Every other key shaped
+// the stored state (packing, particles, wall positions, time step), so changing it would not
+// continue that state. Basal friction sits in the loaded walls: the experiment puts the
+// branch's values back (Experiment::adopt_branch_config).
+constexpr std::array<std::string_view, 13> kBranchKeys = {
+    "contact.mu",      "wedge.mu_bp",          "wedge.mu_br",         "wedge.erosion_height",
+    "wedge.erosion_every", "wedge.s_end",      "wedge.outputs",       "run.threads",
+    "run.adapt_threads",   "run.adapt_slice",  "output.progress",     "output.vtp",
+    "output.checkpoint_every"};
 
 bool is_branch_key(std::string_view key) {
   return std::find(kBranchKeys.begin(), kBranchKeys.end(), key) != kBranchKeys.end();

@@ -226,6 +226,7 @@ class Run {
     apply_engine_config(config_, world_);
     load_world(in, world_);
     exp_->load(in);
+    exp_->adopt_branch_config(world_);
     const Discs& d = world_.discs;
     bool same = d.size() == snap.size();
     for (std::size_t i = 0; same && i < d.size(); ++i)

@@ -98,6 +98,19 @@ class BranchTest(unittest.TestCase):
         self.assertGreater(end["step"], output(out, 0)["step"])
         self.assertTrue(np.all(np.isfinite(end["x"])))
 
+    def test_basal_friction_changes_in_a_branch(self):
+        same, rougher = self.path("mu_same"), self.path("mu_rougher")
+        self.assertEqual(run(same, "--from", self.source + ":1").returncode, 0)
+        r = run(rougher, "--from", self.source + ":1", sets=["wedge.mu_bp=0.6", "wedge.mu_br=0.9"])
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assert_same_state(output(rougher, 0), output(same, 0))
+        last = n_outputs(same) - 1
+        self.assertEqual(n_outputs(rougher), n_outputs(same))
+        # The walls carry the branch's friction from its first step on, so the runs part.
+        self.assertFalse(np.array_equal(output(rougher, last)["x"], output(same, last)["x"]))
+        with open(os.path.join(rougher, "config.toml")) as f:
+            self.assertIn("mu_bp = 0.6", f.read())
+
     def test_a_branch_resumes_bit_for_bit(self):
         whole, killed = self.path("whole"), self.path("killed")
         self.assertEqual(run(whole, "--from", self.source + ":1").returncode, 0)
@@ -122,7 +135,7 @@ class BranchTest(unittest.TestCase):
             (["--from", empty], [], "is not a run folder"),
             (["--from", self.source], ["run.experiment=repose"], "experiment 'wedge'"),
             (["--from", self.source], ["layer.thickness=6"], "layer.thickness"),
-            (["--from", self.source], ["wedge.mu_bp=0.3"], "wedge.mu_bp"),
+            (["--from", self.source], ["wedge.gamma_b=0.3"], "wedge.gamma_b"),
         ]
         for i, (extra, sets, named) in enumerate(cases):
             out = self.path("bad%d" % i)

@@ -118,6 +118,13 @@ class AggregateTest(unittest.TestCase):
         self.assertAlmostEqual(float(fits["Dp"]["b"]), 0.5, delta=0.03)
         self.assertAlmostEqual(float(fits["Dp"]["offset"]), -1.0, delta=0.15)
         self.assertEqual(fits["H"]["offset_how"], "none")
+        # The Simple Model table: ratio is the mean H over the model's H, row by row.
+        with open(os.path.join(a, "aggregate", "simple_model.csv"), newline="") as f:
+            rows = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))
+                    if float(r["H_simple"]) > 0]
+        self.assertTrue(rows)
+        for r in rows:
+            self.assertAlmostEqual(float(r["ratio"]), float(r["H_mean"]) / float(r["H_simple"]), places=12)
         # Charts: one command, every figure.
         r = subprocess.run([sys.executable, os.path.join(ROOT, "python", "ensemble_charts.py"), a],
                            capture_output=True, text=True)
