@@ -18,6 +18,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(REPO, "python"))
 import orogen_analysis  # noqa: E402
 import exhumation_charts  # noqa: E402
+import exhumation_summary  # noqa: E402
 
 BINARY = os.environ.get("OROGEN_BINARY", "")
 SMALL = ("layer.thickness=5 wedge.tile_length=4 wedge.retro_length=4 wedge.initial_active=4 wedge.window=3 "
@@ -39,6 +40,19 @@ class ExhumationCharts(unittest.TestCase):
     @classmethod
     def tearDownClass(cls):
         shutil.rmtree(cls.tmp)
+
+    def test_summary_row_of_indicators(self):
+        row = exhumation_summary.indicators(self.run_dir)
+        ds = orogen_analysis.load(self.run_dir)
+        self.assertEqual(row["outputs"], ds.sizes["time"])
+        self.assertEqual(row["steady_output"], orogen_analysis.steady_output(ds))
+        # The column eroded most is one of the columns the analysis has, and the erosion is there.
+        cum = ds.cum_eroded_area.isel(time=-1)
+        self.assertEqual(float(cum.sel(column=row["x_max_erosion"])), float(cum.max()))
+        self.assertLessEqual(row["low_erosion_near_step"], row["low_erosion_outputs"])
+        table = exhumation_summary.markdown([row])
+        self.assertEqual(len(table.strip().splitlines()), 3)
+        self.assertEqual(exhumation_summary.main([os.path.join(self.tmp, "missing")]), 2)
 
     def test_loader_gives_labelled_dataset(self):
         ds = orogen_analysis.load(self.run_dir)
