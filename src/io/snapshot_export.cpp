@@ -53,6 +53,14 @@ Box bounding_box(const Snapshot& s) {
   return {b.xlo - 1, b.xhi + 1, b.ylo - 1, b.yhi + 1};
 }
 
+// The per-disc arrays every format writes.
+struct DiscState {
+  explicit DiscState(const Snapshot& s)
+      : x(s.field("x")), y(s.field("y")), r(s.field("radius")), vx(s.field("vx")), vy(s.field("vy")),
+        omega(s.field("omega")) {}
+  const std::vector<double>&x, &y, &r, &vx, &vy, &omega;
+};
+
 std::string header_line(const Snapshot& s, const ExportSource& src) {
   return fmt::format("Orogen {} output {} of {} (step {}, t = {}): 2-D discs, lengths in d, time in sqrt(d/g)",
                      OROGEN_VERSION, src.output, src.run, s.step, num(s.time));
@@ -60,12 +68,7 @@ std::string header_line(const Snapshot& s, const ExportSource& src) {
 
 std::string lammps_data(const Snapshot& s, const ExportSource& src) {
   const Box b = bounding_box(s);
-  const auto& x = s.field("x");
-  const auto& y = s.field("y");
-  const auto& r = s.field("radius");
-  const auto& vx = s.field("vx");
-  const auto& vy = s.field("vy");
-  const auto& omega = s.field("omega");
+  const DiscState d(s);
   std::string out = header_line(s, src) + "; atom id = disc id + 1, type 1 free disc, 2 cluster member\n\n";
   auto o = std::back_inserter(out);
   fmt::format_to(o, "{} atoms\n2 atom types\n\n", s.size());
@@ -73,38 +76,29 @@ std::string lammps_data(const Snapshot& s, const ExportSource& src) {
                  num(b.yhi));
   out += "Atoms # sphere\n\n";
   for (std::size_t i = 0; i < s.size(); ++i)
-    fmt::format_to(o, "{} {} {} 1 {} {} 0\n", s.id[i] + 1, atom_type(s, i), num(2 * r[i]), num(x[i]), num(y[i]));
+    fmt::format_to(o, "{} {} {} 1 {} {} 0\n", s.id[i] + 1, atom_type(s, i), num(2 * d.r[i]), num(d.x[i]), num(d.y[i]));
   out += "\nVelocities\n\n";
   for (std::size_t i = 0; i < s.size(); ++i)
-    fmt::format_to(o, "{} {} {} 0 0 0 {}\n", s.id[i] + 1, num(vx[i]), num(vy[i]), num(omega[i]));
+    fmt::format_to(o, "{} {} {} 0 0 0 {}\n", s.id[i] + 1, num(d.vx[i]), num(d.vy[i]), num(d.omega[i]));
   return out;
 }
 
 std::string lammps_dump(const Snapshot& s, const ExportSource&) {
   const Box b = bounding_box(s);
-  const auto& x = s.field("x");
-  const auto& y = s.field("y");
-  const auto& r = s.field("radius");
-  const auto& vx = s.field("vx");
-  const auto& vy = s.field("vy");
-  const auto& omega = s.field("omega");
+  const DiscState d(s);
   std::string out;
   auto o = std::back_inserter(out);
   fmt::format_to(o, "ITEM: TIMESTEP\n{}\nITEM: NUMBER OF ATOMS\n{}\nITEM: BOX BOUNDS ff ff pp\n{} {}\n{} {}\n-0.5 0.5\n",
                  s.step, s.size(), num(b.xlo), num(b.xhi), num(b.ylo), num(b.yhi));
   out += "ITEM: ATOMS id type x y z radius vx vy vz omegaz\n";
   for (std::size_t i = 0; i < s.size(); ++i)
-    fmt::format_to(o, "{} {} {} {} 0 {} {} {} 0 {}\n", s.id[i] + 1, atom_type(s, i), num(x[i]), num(y[i]), num(r[i]),
-                   num(vx[i]), num(vy[i]), num(omega[i]));
+    fmt::format_to(o, "{} {} {} {} 0 {} {} {} 0 {}\n", s.id[i] + 1, atom_type(s, i), num(d.x[i]), num(d.y[i]),
+                   num(d.r[i]), num(d.vx[i]), num(d.vy[i]), num(d.omega[i]));
   return out;
 }
 
 std::string xyz(const Snapshot& s, const ExportSource& src) {
-  const auto& x = s.field("x");
-  const auto& y = s.field("y");
-  const auto& r = s.field("radius");
-  const auto& vx = s.field("vx");
-  const auto& vy = s.field("vy");
+  const DiscState d(s);
   std::string out;
   auto o = std::back_inserter(out);
   fmt::format_to(o, "{}\n", s.size());
@@ -113,8 +107,8 @@ std::string xyz(const Snapshot& s, const ExportSource& src) {
                  "pbc=\"F F F\" comment=\"{}\"\n",
                  num(s.time), s.step, header_line(s, src));
   for (std::size_t i = 0; i < s.size(); ++i)
-    fmt::format_to(o, "{} {} {} 0 {} {} 0 {} {} {}\n", atom_type(s, i) == 2 ? "C" : "D", num(x[i]), num(y[i]),
-                   num(vx[i]), num(vy[i]), num(r[i]), s.id[i], s.cluster_id[i]);
+    fmt::format_to(o, "{} {} {} 0 {} {} 0 {} {} {}\n", atom_type(s, i) == 2 ? "C" : "D", num(d.x[i]), num(d.y[i]),
+                   num(d.vx[i]), num(d.vy[i]), num(d.r[i]), s.id[i], s.cluster_id[i]);
   return out;
 }
 

@@ -15,6 +15,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/wall_display.hpp"
+#include "io/xml_escape.hpp"
 
 namespace orogen {
 namespace {
@@ -41,21 +42,6 @@ std::string base64(std::span<const unsigned char> in) {
     out += table[(v >> 12) & 63];
     out += rest == 2 ? table[(v >> 6) & 63] : '=';
     out += '=';
-  }
-  return out;
-}
-
-std::string xml_escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
   }
   return out;
 }

@@ -8,6 +8,7 @@
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/wall_display.hpp"
+#include "io/xml_escape.hpp"
 
 namespace orogen {
 namespace {
@@ -19,20 +20,6 @@ std::string number_type(const h5::DatasetInfo& info) {
     case h5::Kind::UnsignedInt: return info.element_size == 1 ? "UChar" : "UInt";
     default: return "";
   }
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // A DataItem reading dataset `name` of output `o` (HDF5 paths: "file:/group/name").
@@ -77,7 +64,8 @@ void write_contacts(std::string& out, const XdmfOutput& o) {
   const std::string c = std::to_string(o.n_contacts);
   const std::string points = std::to_string(2 * o.n_contacts) + " 2";
   out += fmt::format("        <Grid Name=\"contacts\" GridType=\"Uniform\">\n"
-                     "          <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\">\n"
+                     "          <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" "
+                     "NumberOfElements=\"{}\">\n"
                      "            {}\n          </Topology>\n"
                      "          <Geometry GeometryType=\"XY\">\n            {}\n          </Geometry>\n",
                      c, hdf_item(o, "contacts/segment_cells", c + " 2", "Int", 8),
