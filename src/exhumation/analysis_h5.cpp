@@ -21,8 +21,9 @@ const std::string kAge = "model time since the particle was last deeper than the
 
 // Chunks: one output's row of a time series is whole chunks, so that appending an output
 // never rewrites an earlier one; a particle row is cut into chunks of kParticleChunk discs,
-// so that discs not alive in an output (NaN) cost no disk where whole chunks are absent.
-constexpr hsize_t kParticleChunk = 16384, kTimeChunk = 1024, kRemovalChunk = 4096;
+// small enough that a thinned row (--particle-stride) does not fill whole chunks with NaN,
+// and discs not alive in an output cost no disk where whole chunks are absent.
+constexpr hsize_t kParticleChunk = 4096, kTimeChunk = 1024, kRemovalChunk = 4096;
 
 enum class Type { F64, F32, I64, U8 };
 

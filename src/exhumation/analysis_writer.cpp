@@ -96,7 +96,12 @@ void AnalysisWriter::open_for_writing() {
     m.write_csv(columns_csv_header(m.p));
     m.csv_bytes0 = m.res.columns_csv_bytes;
   } else {
-    m.file.emplace(h5::File::open(m.h5_path(), h5::File::Mode::ReadWrite));
+    try {
+      m.file.emplace(h5::File::open(m.h5_path(), h5::File::Mode::ReadWrite));
+    } catch (const h5::Error& e) {
+      // HDF5 locks a file open for writing; the usual cause is a reader holding it open.
+      throw h5::Error(std::string(e.what()) + "; if another program has it open, close it there and analyze again");
+    }
     trim_analysis_h5(m.file->id(), m.res);
     fs::resize_file(m.csv_path(), m.res.columns_csv_bytes);
     m.csv = ::open(m.csv_path().c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
