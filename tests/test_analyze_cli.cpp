@@ -182,6 +182,19 @@ TEST_F(AnalyzeCli, ACallKilledBeforeSavingItsStateIsMadeGoodByTheNext) {
   ASSERT_EQ(orogen_cli("analyze '" + copy.string() + "'", dir_).status, 0);
   expect_same_analysis(run, copy);
 
+  // A call killed while analysis.h5 was open for writing leaves it marked incomplete (HDF5's
+  // metadata may be half written): the next call starts over.
+  {
+    namespace h5 = orogen::h5;
+    h5::File f = h5::File::open(run / "analysis.h5", h5::File::Mode::ReadWrite);
+    h5::set_attr_int64(f.id(), "incomplete", 1);
+  }
+  const Result marked = orogen_cli("analyze '" + run.string() + "'", dir_);
+  ASSERT_EQ(marked.status, 0) << marked.err;
+  EXPECT_NE(marked.out.find("7 outputs (7 new)"), std::string::npos) << marked.out;
+  EXPECT_NE(marked.err.find("was being written when its call stopped"), std::string::npos) << marked.err;
+  expect_same_analysis(run, copy);
+
   // Files that do not continue the state (here: analysis.h5 gone) make the call start over.
   fs::remove(run / "analysis.h5");
   const Result over = orogen_cli("analyze '" + run.string() + "'", dir_);

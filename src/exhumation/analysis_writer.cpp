@@ -52,6 +52,13 @@ struct AnalysisWriter::Impl {
     if (csv >= 0) ::close(csv);
     csv = -1;
   }
+  // HDF5 1.10 is not safe against a kill while a file is open for writing (its metadata may be
+  // half on disk): `incomplete` = 1 marks such a file on disk, and the next call starts over.
+  void mark_incomplete(bool on) {
+    h5::set_attr_int64(file->id(), "incomplete", on ? 1 : 0);
+    file->flush();
+    if (on && !fresh) fsync_file(h5_path());
+  }
 };
 
 AnalysisWriter::AnalysisWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -62,6 +69,8 @@ AnalysisWriter AnalysisWriter::resume(const fs::path& dir, const std::string& ru
   auto impl = std::make_unique<Impl>(dir, run_identity, res, p, false);
   {
     const h5::File f = h5::File::open(dir / "analysis.h5", h5::File::Mode::ReadOnly);
+    if (!h5::has_attr(f.id(), "incomplete") || h5::get_attr_int64(f.id(), "incomplete") != 0)
+      throw h5::Error("analysis.h5 was being written when its call stopped");
     impl->needs_trim = check_analysis_h5(f.id(), run_identity, res, p);
   }
   const fs::path csv = dir / "analysis_columns.csv";
@@ -95,6 +104,7 @@ void AnalysisWriter::open_for_writing() {
     m.res.columns_csv_bytes = 0;
     m.write_csv(columns_csv_header(m.p));
     m.csv_bytes0 = m.res.columns_csv_bytes;
+    m.mark_incomplete(true);
   } else {
     try {
       m.file.emplace(h5::File::open(m.h5_path(), h5::File::Mode::ReadWrite));
@@ -102,6 +112,7 @@ void AnalysisWriter::open_for_writing() {
       // HDF5 locks a file open for writing; the usual cause is a reader holding it open.
       throw h5::Error(std::string(e.what()) + "; if another program has it open, close it there and analyze again");
     }
+    m.mark_incomplete(true);
     trim_analysis_h5(m.file->id(), m.res);
     fs::resize_file(m.csv_path(), m.res.columns_csv_bytes);
     m.csv = ::open(m.csv_path().c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
@@ -122,6 +133,7 @@ void AnalysisWriter::commit(const ExhumationTracker& tracker) {
   if (m.fresh || m.needs_trim || m.res.outputs.size() > m.outputs0) {
     open_for_writing();
     finish_analysis_h5(m.file->id(), m.res, m.slot, tracker);
+    m.mark_incomplete(false);
     m.file->close();
     m.file.reset();
     fsync_file(m.h5_path());
@@ -147,7 +159,11 @@ AnalysisWriter::~AnalysisWriter() {
   try {
     m.res.outputs.resize(m.outputs0);
     m.res.particle_ids.resize(m.particles0);
-    if (m.file) trim_analysis_h5(m.file->id(), m.res);
+    if (m.file) {
+      trim_analysis_h5(m.file->id(), m.res);
+      m.mark_incomplete(false);
+      m.file->close();
+    }
     m.file.reset();
     fs::resize_file(m.csv_path(), m.csv_bytes0);
   } catch (...) {

@@ -2,9 +2,11 @@
 // The files of one `orogen analyze` call, written output by output (docs/exhumation.md,
 // "Files and crash safety"). A fresh analysis builds analysis.h5 and analysis_columns.csv
 // under temporary names and renames them into place at commit(); a continued one appends to
-// them in place, first cutting off what lies beyond the state's counts (a killed call's
-// rows). Either way analysis_state.bin, saved by the caller after commit(), is the truth of
-// how many outputs are complete. Without commit() the destructor undoes what it can: the
+// them in place, first cutting off what lies beyond the state's counts (rows of a call killed
+// after it closed the files). A file killed while open for writing (root attribute
+// `incomplete` = 1) is not continued: the analysis starts over. Either way
+// analysis_state.bin, saved by the caller after commit(), is the truth of how many outputs
+// are complete. Without commit() the destructor undoes what it can: the
 // temporary files are removed, the rows appended in place are cut off again.
 #include <filesystem>
 #include <memory>
