@@ -133,7 +133,8 @@ int main(int argc, char** argv) {
     std::cout << fmt::format("wrote {} outputs of about {} discs in {:.1f} s\n", s.outputs, s.particles,
                              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
-  for (const char* f : {"analysis_state.bin", "analysis.h5"}) fs::remove(fs::path(dir) / f);
+  // No state: the analysis starts from scratch.
+  for (const char* f : {"analysis_state.bin", "analysis.h5", "analysis_columns.csv"}) fs::remove(fs::path(dir) / f);
   o.dir = dir;
   o.particle_stride = stride;
   o.quiet = true;
@@ -141,10 +142,15 @@ int main(int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   const int status = analyze_command(o);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto mib = [&](const char* name) {
+    std::error_code ec;
+    const auto size = fs::file_size(fs::path(dir) / name, ec);
+    return ec ? 0.0 : static_cast<double>(size) / 1048576.0;
+  };
   std::cout << fmt::format("analyze: exit {}, {:.1f} s wall, peak RSS {:.0f} MiB (before: {:.0f} MiB), "
-                           "analysis.h5 {:.0f} MiB, particle stride {}\n",
-                           status, wall, peak_rss_mib(), rss_before,
-                           status == 0 ? static_cast<double>(fs::file_size(fs::path(dir) / "analysis.h5")) / 1048576.0 : 0.0,
-                           stride);
+                           "analysis.h5 {:.0f} MiB, analysis_columns.csv {:.0f} MiB, analysis_state.bin {:.1f} MiB, "
+                           "particle stride {}\n",
+                           status, wall, peak_rss_mib(), rss_before, mib("analysis.h5"), mib("analysis_columns.csv"),
+                           mib("analysis_state.bin"), stride);
   return status;
 }

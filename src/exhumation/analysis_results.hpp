@@ -1,8 +1,8 @@
 #pragma once
-// Everything `orogen analyze` has computed so far for one run: the tracker (to continue with
-// later outputs) and the records of the outputs seen, and the files made from them.
+// What `orogen analyze` keeps of a run between calls: the settings, the per-output summary
+// and the bookkeeping of the files it appends to. The time x particle and time x column
+// series are not kept: each output's record goes to the files and is dropped.
 #include <cstdint>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -18,15 +18,21 @@ struct AnalysisSettings {
   std::int64_t trajectory_output = -1;  // surface particles traced back from this output (-1: last)
 };
 
+// The per-output values the flux balance and the time axis need.
+struct OutputSummary {
+  std::int64_t step = 0;
+  double time = 0, S = 0;
+  double eroded_area = 0;
+  std::int64_t eroded_count = 0;
+};
+
 struct AnalysisResults {
   AnalysisSettings settings;
   double flux_in = 0;  // incoming solid area flux v h0 phi0 [d^2 / time]
   double v = 0, solid_fraction = 0;
-  std::vector<OutputRecord> records;
+  std::vector<OutputSummary> outputs;       // one per output analysed; its size is the count complete
+  std::vector<std::int64_t> particle_ids;   // analysis.h5's particle dimension, in order of first appearance
+  std::uint64_t columns_csv_bytes = 0;      // length of analysis_columns.csv holding those outputs
 };
-
-// DIR/analysis.h5 (built in memory, written atomically) and the CSV tables beside it.
-void write_analysis_files(const std::filesystem::path& dir, const AnalysisResults& results,
-                          const ExhumationTracker& tracker);
 
 }  // namespace orogen

@@ -4,35 +4,6 @@
 
 namespace orogen {
 
-namespace {
-
-// Each record's vectors are concatenated; the per-output particle counts split them again.
-template <class T, class F>
-void put_stack(ArchiveWriter& w, const std::string& name, const std::vector<OutputRecord>& recs, F field) {
-  std::vector<T> all;
-  for (const auto& r : recs) {
-    const auto& v = field(r);
-    all.insert(all.end(), v.begin(), v.end());
-  }
-  w.put(name, all);
-}
-
-template <class T, class F>
-void get_stack(const ArchiveReader& a, const std::string& name, std::vector<OutputRecord>& recs,
-               const std::vector<std::size_t>& sizes, F field) {
-  std::vector<T> all;
-  a.get(name, all);
-  std::size_t at = 0;
-  for (std::size_t t = 0; t < recs.size(); ++t) {
-    auto& v = field(recs[t]);
-    if (at + sizes[t] > all.size()) throw std::runtime_error("analysis state: " + name + " is short");
-    v.assign(all.begin() + static_cast<std::ptrdiff_t>(at), all.begin() + static_cast<std::ptrdiff_t>(at + sizes[t]));
-    at += sizes[t];
-  }
-}
-
-}  // namespace
-
 void save_analysis_state(const std::filesystem::path& path, const AnalysisState& s) {
   ArchiveWriter w;
   const auto& res = s.results;
@@ -119,40 +90,23 @@ void save_analysis_state(const std::filesystem::path& path, const AnalysisState&
   w.put("e_age", e_age);
   w.put("e_un", e_un);
 
-  // Records.
-  const auto& recs = res.records;
-  std::vector<std::int64_t> r_step, r_count, r_kept;
+  // Per-output summary and the files' bookkeeping.
+  std::vector<std::int64_t> r_step, r_count;
   std::vector<double> r_time, r_S, r_area;
-  for (const auto& r : recs) {
+  for (const auto& r : res.outputs) {
     r_step.push_back(r.step);
     r_count.push_back(r.eroded_count);
-    r_kept.push_back(static_cast<std::int64_t>(r.particle_id.size()));
     r_time.push_back(r.time);
     r_S.push_back(r.S);
     r_area.push_back(r.eroded_area);
   }
   w.put("r_step", r_step);
   w.put("r_count", r_count);
-  w.put("r_kept", r_kept);
   w.put("r_time", r_time);
   w.put("r_S", r_S);
   w.put("r_area", r_area);
-  using R = const OutputRecord&;
-  put_stack<double>(w, "r_elevation", recs, [](R r) -> auto& { return r.elevation; });
-  put_stack<double>(w, "r_top_max_depth", recs, [](R r) -> auto& { return r.top_max_depth; });
-  put_stack<double>(w, "r_cum_area", recs, [](R r) -> auto& { return r.cum_eroded_area; });
-  put_stack<std::int64_t>(w, "r_top_id", recs, [](R r) -> auto& { return r.top_id; });
-  put_stack<std::int64_t>(w, "r_cum_count", recs, [](R r) -> auto& { return r.cum_eroded_count; });
-  put_stack<double>(w, "r_surface_age", recs, [](R r) -> auto& { return r.surface_age; });
-  put_stack<double>(w, "r_jump_total", recs, [](R r) -> auto& { return r.jump_total; });
-  put_stack<std::uint8_t>(w, "r_surface_unreset", recs, [](R r) -> auto& { return r.surface_unreset; });
-  put_stack<std::int64_t>(w, "r_jump_count", recs, [](R r) -> auto& { return r.jump_count; });
-  put_stack<std::int64_t>(w, "r_particle_id", recs, [](R r) -> auto& { return r.particle_id; });
-  put_stack<float>(w, "r_particle_x", recs, [](R r) -> auto& { return r.particle_x; });
-  put_stack<float>(w, "r_particle_y", recs, [](R r) -> auto& { return r.particle_y; });
-  put_stack<float>(w, "r_particle_depth", recs, [](R r) -> auto& { return r.particle_depth; });
-  put_stack<float>(w, "r_particle_max_depth", recs, [](R r) -> auto& { return r.particle_max_depth; });
-  put_stack<float>(w, "r_particle_age", recs, [](R r) -> auto& { return r.particle_age; });
+  w.put("particle_ids", res.particle_ids);
+  w.put_scalar("columns_csv_bytes", res.columns_csv_bytes);
   w.finish(path);
 }
 
@@ -252,45 +206,22 @@ AnalysisState load_analysis_state(const std::filesystem::path& path) {
     tr.eroded_.push_back(std::move(e));
   }
 
-  std::vector<std::int64_t> r_step, r_count, r_kept;
+  std::vector<std::int64_t> r_step, r_count;
   std::vector<double> r_time, r_S, r_area;
   a.get("r_step", r_step);
   a.get("r_count", r_count);
-  a.get("r_kept", r_kept);
   a.get("r_time", r_time);
   a.get("r_S", r_S);
   a.get("r_area", r_area);
   const std::size_t nt = r_step.size();
-  if (static_cast<std::int64_t>(nt) != tr.outputs_) throw std::runtime_error("analysis state " + path.string() + ": output count damaged");
-  res.records.resize(nt);
-  std::vector<std::size_t> cols(nt, ncol), cells(nt, nc * ncol), kept(nt), kept_ages(nt);
-  for (std::size_t t = 0; t < nt; ++t) {
-    auto& r = res.records[t];
-    r.step = r_step[t];
-    r.eroded_count = r_count[t];
-    r.time = r_time[t];
-    r.S = r_S[t];
-    r.eroded_area = r_area[t];
-    kept[t] = static_cast<std::size_t>(r_kept[t]);
-    kept_ages[t] = kept[t] * nc;
-  }
-  using R = OutputRecord&;
-  auto& recs = res.records;
-  get_stack<double>(a, "r_elevation", recs, cols, [](R r) -> auto& { return r.elevation; });
-  get_stack<double>(a, "r_top_max_depth", recs, cols, [](R r) -> auto& { return r.top_max_depth; });
-  get_stack<double>(a, "r_cum_area", recs, cols, [](R r) -> auto& { return r.cum_eroded_area; });
-  get_stack<std::int64_t>(a, "r_top_id", recs, cols, [](R r) -> auto& { return r.top_id; });
-  get_stack<std::int64_t>(a, "r_cum_count", recs, cols, [](R r) -> auto& { return r.cum_eroded_count; });
-  get_stack<double>(a, "r_surface_age", recs, cells, [](R r) -> auto& { return r.surface_age; });
-  get_stack<double>(a, "r_jump_total", recs, cells, [](R r) -> auto& { return r.jump_total; });
-  get_stack<std::uint8_t>(a, "r_surface_unreset", recs, cells, [](R r) -> auto& { return r.surface_unreset; });
-  get_stack<std::int64_t>(a, "r_jump_count", recs, cells, [](R r) -> auto& { return r.jump_count; });
-  get_stack<std::int64_t>(a, "r_particle_id", recs, kept, [](R r) -> auto& { return r.particle_id; });
-  get_stack<float>(a, "r_particle_x", recs, kept, [](R r) -> auto& { return r.particle_x; });
-  get_stack<float>(a, "r_particle_y", recs, kept, [](R r) -> auto& { return r.particle_y; });
-  get_stack<float>(a, "r_particle_depth", recs, kept, [](R r) -> auto& { return r.particle_depth; });
-  get_stack<float>(a, "r_particle_max_depth", recs, kept, [](R r) -> auto& { return r.particle_max_depth; });
-  get_stack<float>(a, "r_particle_age", recs, kept_ages, [](R r) -> auto& { return r.particle_age; });
+  if (static_cast<std::int64_t>(nt) != tr.outputs_ || r_count.size() != nt || r_time.size() != nt ||
+      r_S.size() != nt || r_area.size() != nt)
+    throw std::runtime_error("analysis state " + path.string() + ": output count damaged");
+  for (std::size_t t = 0; t < nt; ++t)
+    res.outputs.push_back({.step = r_step[t], .time = r_time[t], .S = r_S[t], .eroded_area = r_area[t],
+                           .eroded_count = r_count[t]});
+  a.get("particle_ids", res.particle_ids);
+  res.columns_csv_bytes = a.get_scalar<std::uint64_t>("columns_csv_bytes");
   s.results = std::move(res);
   return s;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // DIR/analysis_state.bin: what `orogen analyze` needs to continue with the outputs a run adds
-// later (the tracker and the records so far), in the checkpoint archive format, written
-// atomically. A state made with other settings, or for another run, is not used.
+// later (the tracker, the per-output summary and the extent of the files it appends to), in
+// the checkpoint archive format, written atomically: it is the truth of how many outputs are
+// complete. A state made with other settings, or for another run, is not used.
 #include <filesystem>
 #include <optional>
 #include <string>

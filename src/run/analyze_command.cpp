@@ -13,6 +13,7 @@
 
 #include "config/config.hpp"
 #include "exhumation/analysis_state.hpp"
+#include "exhumation/analysis_writer.hpp"
 #include "io/snapshot_reader.hpp"
 
 namespace orogen {
@@ -201,20 +202,35 @@ int analyze(const AnalyzeOptions& options) {
   }
   // removals.csv after the index: it is never older than the outputs it says it covers.
   const ErosionLog erosion = read_erosion(dir / "removals.csv");
-  if (!state) state.emplace(start(o.settings, *config, h0, read(0), identity));
-  const std::int64_t from = state->tracker.outputs_seen();
-  for (std::int64_t k = from; k < count; ++k) {
-    const Snapshot snap = read(k);
-    if (erosion.through_step >= 0 && snap.step > erosion.through_step) break;  // the next call takes it
-    const std::int64_t prev = state->tracker.last_step();
-    std::vector<ErosionEvent> now;
-    for (const auto& e : erosion.events)
-      if (e.step > prev && e.step <= snap.step) now.push_back(e);
-    state->results.records.push_back(state->tracker.observe(discs_of(snap), now));
+  // A state continues only with the files it describes; otherwise everything starts over.
+  std::optional<AnalysisWriter> writer;
+  if (state) {
+    try {
+      writer.emplace(AnalysisWriter::resume(dir, identity, state->results, state->tracker.params()));
+    } catch (const std::exception& e) {
+      if (!o.quiet) std::cerr << "note: " << state_path.string() << " not used (" << e.what() << "); starting over\n";
+      state.reset();
+    }
   }
+  if (!state) {
+    state.emplace(start(o.settings, *config, h0, read(0), identity));
+    writer.emplace(AnalysisWriter::fresh(dir, identity, state->results, state->tracker.params()));
+  }
+  const std::int64_t from = state->tracker.outputs_seen();
   try {
-    write_analysis_files(dir, state->results, state->tracker);
+    for (std::int64_t k = from; k < count; ++k) {
+      const Snapshot snap = read(k);
+      if (erosion.through_step >= 0 && snap.step > erosion.through_step) break;  // the next call takes it
+      const std::int64_t prev = state->tracker.last_step();
+      std::vector<ErosionEvent> now;
+      for (const auto& e : erosion.events)
+        if (e.step > prev && e.step <= snap.step) now.push_back(e);
+      writer->append(state->tracker.observe(discs_of(snap), now));
+    }
+    writer->commit(state->tracker);
     save_analysis_state(state_path, *state);
+  } catch (const AnalyzeError&) {
+    throw;
   } catch (const std::exception& e) {
     throw AnalyzeError(1, fmt::format("cannot write the analysis in {}: {}", dir.string(), e.what()));
   }
