@@ -173,7 +173,7 @@ const std::vector<KeySpec>& schema() {
               "the same files as orogen analyze afterwards"),
       integer("analysis.every", 1, ge(1), le(1000000),
               "with analysis.in_run, analyse after every this many outputs and at the end (each analysis "
-              "rewrites analysis.h5 whole: raise it for long runs)"),
+              "appends the new outputs; about 1 s for 50,000 discs late in a long run)"),
       text("analysis.closure_depths", "0.15,0.3,0.5,0.7,0.9", {},
            "closure depths h_i below the surface, ascending, comma-separated, each in (0, 1] [h0]"),
       integer("analysis.flux_window", 10, ge(1), le(1000000), "outputs averaged by the flux steady-state rule"),
