@@ -2,7 +2,6 @@
 #include "util/units.hpp"
 
 #include <fmt/format.h>
-#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +23,6 @@ constexpr std::size_t kBackstop = kBoxRight;  // the box's right wall; the left 
 }  // namespace
 
 void SinglyVergentExperiment::setup(World& w) {
-  if (!spec_.speed_warning.empty())
-    if (auto log = spdlog::get("orogen")) log->warn("{}", spec_.speed_warning);
   PackingSpec p = spec_.packing;
   p.length = spec_.length;
   p.thickness = spec_.h0;
@@ -209,15 +206,9 @@ std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& c) {
                                    "well clear of the far wall (from {})",
                                    0.8 * s.length / s.h0, c.describe({"layer.length", "layer.thickness"})));
   // The backstop is not the constant-velocity base of eq. 4.3: above the bound the shortening
-  // is faster than quasi-static, not unstable (docs/model.md), so by default only a warning.
-  const std::string& bound = c.get_string("singly.speed_bound");
-  if (bound == "refuse") check_imposed_speed(c, "singly.speed");
-  if (bound == "warn") {
-    const std::string excess = imposed_speed_excess(c, "singly.speed");
-    if (!excess.empty())
-      s.speed_warning = fmt::format("singly.speed = {}: {} (singly.speed_bound = \"off\" silences this)",
-                                    s.speed, excess);
-  }
+  // is faster than quasi-static, not unstable (docs/model.md); by default only a warning
+  // (config_warnings).
+  if (c.get_string("singly.speed_bound") == "refuse") check_imposed_speed(c, "singly.speed");
   return std::make_unique<SinglyVergentExperiment>(std::move(s));
 }
 

@@ -22,7 +22,6 @@ struct SinglyVergentSpec {
   double column_width_factor = 2.3;
   PackingSpec packing;
   SettleSpec settle;
-  std::string speed_warning;  // logged at set-up: the speed is above the quasi-static bound
 };
 
 // The wedge's shape at one moment (lengths in d, angles in rad).

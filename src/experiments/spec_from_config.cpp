@@ -90,4 +90,17 @@ void check_imposed_speed(const Config& c, const std::string& key) {
                        fmt::format("{}", c.get_float(key)), excess);
 }
 
+std::vector<std::string> config_warnings(const Config& c) {
+  std::vector<std::string> out;
+  if (c.get_string("run.experiment") == "singly_vergent" && c.get_string("singly.speed_bound") == "warn") {
+    const std::string excess = imposed_speed_excess(c, "singly.speed");
+    if (!excess.empty())
+      out.push_back(fmt::format("singly.speed = {}: {}. For the backstop this is a quasi-static rule, not a "
+                                "stability limit (docs/model.md); singly.speed_bound = \"off\" silences this, "
+                                "\"refuse\" refuses it",
+                                c.get_float("singly.speed"), excess));
+  }
+  return out;
+}
+
 }  // namespace orogen

@@ -28,4 +28,8 @@ void check_material_size(const Config& config, double length, double thickness,
 std::string imposed_speed_excess(const Config& config, const std::string& key);
 void check_imposed_speed(const Config& config, const std::string& key);
 
+// What the configuration allows but the log should say (the run driver logs each line): a
+// singly.speed above the bound with singly.speed_bound = "warn".
+std::vector<std::string> config_warnings(const Config& config);
+
 }  // namespace orogen
