@@ -84,9 +84,9 @@ TEST(DampingConventions, FromRestitutionPairsAndWallsReboundAlike) {
 TEST(DampingConventions, ThePullingDashpotPullsAndTheDefaultNeverDoes) {
   // Separating fast from a small overlap: k_n delta < gamma_n v_n.
   const double delta = 1e-4, vn = 1.0, gn = 20.0;
-  EXPECT_EQ(LinearNormal::force(kKn, delta, gn, vn), 0.0);
-  EXPECT_DOUBLE_EQ(LinearPullNormal::force(kKn, delta, gn, vn), kKn * delta - gn * vn);
-  EXPECT_LT(LinearPullNormal::force(kKn, delta, gn, vn), 0.0);
+  EXPECT_EQ(LinearNormal::force(kKn, delta, gn, vn, 0.25), 0.0);
+  EXPECT_DOUBLE_EQ(LinearPullNormal::force(kKn, delta, gn, vn, 0.25), kKn * delta - gn * vn);
+  EXPECT_LT(LinearPullNormal::force(kKn, delta, gn, vn, 0.25), 0.0);
   // The Coulomb limit of a pulling contact is mu |F_n|, as in LAMMPS.
   EXPECT_DOUBLE_EQ(LinearPullNormal::load(-3.0), 3.0);
 }

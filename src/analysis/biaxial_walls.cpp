@@ -22,7 +22,7 @@ void add_elastic_forces(const World& w, std::vector<WallForce>& out) {
     if (dist2 >= r * r || dist2 == 0.0) continue;
     const double dist = std::sqrt(dist2);
     // The elastic part of the contact law's normal force (no dashpot: the servo's stress).
-    const double fn = Normal::elastic(w.law.kn, r - dist);
+    const double fn = Normal::elastic(w.law.kn, r - dist, r);
     // The disc is pushed along (disc - contact point); the wall the opposite way.
     out[wc.wall[k]].fx -= fn * (d.x[i] - cx) / dist;
     out[wc.wall[k]].fy -= fn * (d.y[i] - cy) / dist;

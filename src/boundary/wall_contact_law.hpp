@@ -43,7 +43,7 @@ inline WallContactForce wall_contact_force(const Wall& w, double x, double y, do
   const double rvy = vy - omega * r * ty - wvy;
   const double vn = rvx * nx + rvy * ny;  // > 0 when separating
   const double vt = rvx * tx + rvy * ty;
-  const double fn = Normal::force(law.kn, delta, gamma_n, vn);
+  const double fn = Normal::force(law.kn, delta, gamma_n, vn, r);  // a wall: the disc's radius
   const double limit = w.mu * Normal::load(fn);
   Tangential t{0.0, 0.0, false};  // smooth: no tangential force, no history
   switch (w.friction) {

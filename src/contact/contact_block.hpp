@@ -54,7 +54,7 @@ inline ContactLane contact_lane(double dx, double dy, double ri, double rj, doub
   const double rot = wi * ri + wj * rj;
   const double vn = dvx * nx + dvy * ny;        // > 0 when separating
   const double vt = dvx * tx + dvy * ty - rot;  // sliding along t
-  const double fn = Normal::force(kn, delta, gn, vn);
+  const double fn = Normal::force(kn, delta, gn, vn, ri * rj / rsum);
   const Tangential t = tangential_spring(xi_old, vt, dt, ks, gs, mu * Normal::load(fn));
   return {touching ? fn * nx + t.ft * tx : 0.0,
           touching ? fn * ny + t.ft * ty : 0.0,
