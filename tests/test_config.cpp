@@ -58,7 +58,8 @@ TEST(Config, BadFilesNameSourceKeyValueAndAllowed) {
       {"[time]\ndt_fraction = 0.0\n", {"time.dt_fraction = 0.0", "must be >= 0.001 and <= 1"}},
       {"[contact]\nkk = 5\n",
        {"contact.kk = 5", "unknown key", "did you mean 'contact.kn'?",
-        "keys in [contact]: kn, ks_ratio, mu, mu_wall, restitution, tangential_damping_ratio"}},
+        "keys in [contact]: kn, ks_ratio, mu, mu_wall, normal_force, damping, restitution, damping_rate, "
+        "tangential_damping_ratio"}},
       {"[contact]\ndt = 0.1\n", {"contact.dt = 0.1", "did you mean 'time.dt'?"}},
       {"[contaact]\nkn = 5\n",
        {"contaact.kn = 5", "unknown section [contaact]", "did you mean [contact]?",

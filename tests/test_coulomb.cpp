@@ -1,22 +1,33 @@
 // The tangential spring with its Coulomb limit, and the life of the contact history.
 #include <gtest/gtest.h>
 
+#include "contact/contact_block.hpp"
+#include "contact/normal_laws.hpp"
 #include "world_fixtures.hpp"
 
 namespace orogen {
 namespace {
+
+// The pair kernel (linear law, no dashpot) on one contact; xi is the history, updated in place.
+ContactLane pair_contact(double dx, double dy, double dvx, double dvy, double kn, double ks, double mu, double dt,
+                         double& xi) {
+  const ContactLane c = contact_lane<LinearNormal>(dx, dy, 0.5, 0.5, dvx, dvy, 0, 0, 0, 0, xi, kn, ks, mu, dt);
+  xi = c.xi;
+  return c;
+}
 
 // Drives a contact with a steady sliding velocity and returns the tangential force.
 TEST(Coulomb, SpringSticksBelowTheLimitAndSlipsOnIt) {
   const double kn = 1e4, ks = 5e3, mu = 0.3, dt = 1e-3, overlap = 0.01;
   const double fn = kn * overlap;
   double xi = 0;
-  PairForce f;
+  ContactLane f{};
   // Sliding at speed v along t accumulates xi = v t; the force is -ks xi until mu fn.
   const double v = 0.1;
   int stuck_steps = 0;
   for (int s = 0; s < 200; ++s) {
-    ASSERT_TRUE(contact_force(1.0 - overlap, 0.0, 0.5, 0.5, 0.0, v, 0, 0, kn, ks, mu, 0, 0, dt, xi, f));
+    f = pair_contact(1.0 - overlap, 0.0, 0.0, v, kn, ks, mu, dt, xi);
+    ASSERT_TRUE(f.touching);
     if (std::fabs(f.ft) < mu * fn) {
       EXPECT_NEAR(f.ft, -ks * xi, 1e-12);  // elastic: spring force
       ++stuck_steps;
@@ -38,11 +49,10 @@ TEST(Coulomb, LoadJustBelowTheLimitSticksJustAboveSlips) {
     const double load = ratio * mu * fn;
     // Quasi-static loading: xi grows until the spring balances the load or slips.
     double xi = 0;
-    PairForce f;
     bool slipped = false;
     for (int s = 0; s < 10000; ++s) {
       const double stretch_rate = (load - ks * xi) > 0 ? 1e-5 : 0.0;
-      contact_force(0.0, 1.0 - overlap, 0.5, 0.5, -stretch_rate, 0.0, 0, 0, kn, ks, mu, 0, 0, 1.0, xi, f);
+      const ContactLane f = pair_contact(0.0, 1.0 - overlap, -stretch_rate, 0.0, kn, ks, mu, 1.0, xi);
       if (std::fabs(f.ft) >= mu * fn) { slipped = true; break; }
       if (stretch_rate == 0.0) break;
     }

@@ -10,6 +10,7 @@
 #include "config/config.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/singly_vergent_experiment.hpp"
+#include "experiments/spec_from_config.hpp"
 #include "packing/packing.hpp"
 
 namespace orogen {
@@ -65,6 +66,28 @@ TEST(SinglyVergent, RefusesAShorteningThatReachesTheFarWall) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("singly.shortening"), std::string::npos) << e.what();
   }
+}
+
+TEST(SinglyVergent, ABackstopAboveTheQuasiStaticBoundWarnsUnlessRefused) {
+  // 0.5 d per time unit at dt = 5e-4 (a setting LAMMPS users run): 2.5e-4 d per step, above
+  // m g / k_n = 3.85e-5 d, a bound of eq. 4.3 for the constant-velocity base, not the backstop.
+  auto config = [](const std::string& bound) {
+    return Config::load(std::nullopt, {"run.experiment=singly_vergent", "singly.speed=0.5", "time.dt=5e-4",
+                                       "singly.speed_bound=" + bound});
+  };
+  ASSERT_EQ(config_warnings(config("warn")).size(), 1u);
+  EXPECT_NE(config_warnings(config("warn"))[0].find("thesis eq. 4.3"), std::string::npos);
+  EXPECT_TRUE(config_warnings(config("off")).empty());
+  EXPECT_NO_THROW(make_experiment(config("warn")));
+  EXPECT_NO_THROW(make_experiment(config("off")));
+  try {
+    make_experiment(config("refuse"));
+    FAIL() << "expected a configuration error";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("singly.speed = 0.5"), std::string::npos) << e.what();
+  }
+  // Within the bound nothing is said.
+  EXPECT_TRUE(config_warnings(Config::load(std::nullopt, {"run.experiment=singly_vergent"})).empty());
 }
 
 }  // namespace

@@ -2,10 +2,13 @@
 
 #include <cmath>
 
-namespace orogen {
+#include "contact/normal_laws.hpp"
 
-std::vector<WallForce> elastic_wall_forces(const World& w) {
-  std::vector<WallForce> out(w.walls.size());
+namespace orogen {
+namespace {
+
+template <class Normal>
+void add_elastic_forces(const World& w, std::vector<WallForce>& out) {
   const auto& wc = w.neighbors.walls;
   const auto& d = w.discs;
   for (std::size_t k = 0; k < wc.size(); ++k) {
@@ -18,11 +21,19 @@ std::vector<WallForce> elastic_wall_forces(const World& w) {
     const double r = d.radius[i];
     if (dist2 >= r * r || dist2 == 0.0) continue;
     const double dist = std::sqrt(dist2);
-    const double fn = w.law.kn * (r - dist);
+    // The elastic part of the contact law's normal force (no dashpot: the servo's stress).
+    const double fn = Normal::elastic(w.law.kn, r - dist, r);
     // The disc is pushed along (disc - contact point); the wall the opposite way.
     out[wc.wall[k]].fx -= fn * (d.x[i] - cx) / dist;
     out[wc.wall[k]].fy -= fn * (d.y[i] - cy) / dist;
   }
+}
+
+}  // namespace
+
+std::vector<WallForce> elastic_wall_forces(const World& w) {
+  std::vector<WallForce> out(w.walls.size());
+  with_normal_law(w.law.normal_force, [&](auto normal) { add_elastic_forces<decltype(normal)>(w, out); });
   return out;
 }
 

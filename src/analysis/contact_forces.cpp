@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "boundary/wall_contact_law.hpp"
+#include "contact/contact_block.hpp"
+#include "contact/normal_laws.hpp"
 
 namespace orogen {
 namespace {
@@ -21,27 +23,23 @@ void add(ContactList& c, bool wall, std::int64_t id_a, std::int64_t id_b, std::i
   c.at_limit.push_back(at_limit ? 1 : 0);
 }
 
+template <class Normal>
 ContactList measure(const World& w) {
   ContactList c;
   const auto& L = w.neighbors;
   const auto& d = w.discs;
   for (std::size_t p = 0; p < L.size(); ++p) {
     const auto i = L.first[p], j = L.second[p];
-    const double dx = d.x[j] - d.x[i], dy = d.y[j] - d.y[i];
     const double gn = L.gamma_n[p];
-    double xi = L.xi[p];  // a copy: the state keeps its own
-    PairForce f;
-    if (!contact_force(dx, dy, d.radius[i], d.radius[j], d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.omega[i],
-                       d.omega[j], w.law.kn, w.law.ks, w.law.mu, gn, w.law.tangential_damping_ratio * gn, w.dt, xi,
-                       f))
-      continue;
-    const double dist = std::sqrt(dx * dx + dy * dy);
-    const double inv = 1.0 / dist;  // as contact_force: the same bits
-    const double nx = dx * inv, ny = dy * inv;
-    const double overlap = d.radius[i] + d.radius[j] - dist;
-    const double reach = d.radius[i] - 0.5 * overlap;  // centre of i to the middle of the overlap
-    add(c, false, d.id[i], d.id[j], i, j, d.x[i] + reach * nx, d.y[i] + reach * ny, nx, ny, f.fn, f.ft, f.fx, f.fy,
-        overlap, f.at_limit);
+    // The pair kernel of the force stage on a copy of the history: the state keeps its own.
+    const ContactLane f = contact_lane<Normal>(d.x[j] - d.x[i], d.y[j] - d.y[i], d.radius[i], d.radius[j],
+                                               d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.omega[i], d.omega[j], gn,
+                                               w.law.tangential_damping_ratio * gn, L.xi[p], w.law.kn, w.law.ks,
+                                               w.law.mu, w.dt);
+    if (!f.touching) continue;
+    const double reach = d.radius[i] - 0.5 * f.delta;  // centre of i to the middle of the overlap
+    add(c, false, d.id[i], d.id[j], i, j, d.x[i] + reach * f.nx, d.y[i] + reach * f.ny, f.nx, f.ny, f.fn, f.ft, f.fx,
+        f.fy, f.delta, f.at_limit);
   }
   // Rows of the enabled walls, as the output's `walls` dataset lists them.
   std::vector<std::int64_t> row(w.walls.size(), -1);
@@ -52,13 +50,20 @@ ContactList measure(const World& w) {
   for (std::size_t k = 0; k < wc.size(); ++k) {
     const auto i = wc.disc[k];
     if (row[wc.wall[k]] < 0) continue;
-    const WallContactForce f = wall_contact_force(w.walls[wc.wall[k]], d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i],
-                                                  d.radius[i], wc.gamma_n[k], wc.mass[k], wc.xi[k], w.law, w.dt);
+    const WallContactForce f =
+        wall_contact_force<Normal>(w.walls[wc.wall[k]], d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i], d.radius[i],
+                                   wc.gamma_n[k], wc.mass[k], wc.xi[k], w.law, w.dt);
     if (!f.touching) continue;
     const double reach = d.radius[i] - 0.5 * f.delta;
     add(c, true, row[wc.wall[k]], d.id[i], -1, i, d.x[i] - reach * f.nx, d.y[i] - reach * f.ny, f.nx, f.ny, f.fn,
         f.ft, f.fn * f.nx + f.ft * -f.ny, f.fn * f.ny + f.ft * f.nx, f.delta, f.at_limit);
   }
+  return c;
+}
+
+ContactList measure(const World& w) {
+  ContactList c;
+  with_normal_law(w.law.normal_force, [&](auto normal) { c = measure<decltype(normal)>(w); });
   return c;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The contacts of the current state with their forces, for output: the same laws as the force
-// stages (contact_force, wall_contact_force) on copies of the stored histories, so the list
+// stages (contact_lane, wall_contact_force) on copies of the stored histories, so the list
 // holds bitwise the forces the next step applies and the world is left as it was.
 #include <cstddef>
 #include <cstdint>

@@ -7,6 +7,7 @@
 
 #include "boundary/wall.hpp"
 #include "contact/contact_law.hpp"
+#include "contact/law_kernels.hpp"
 
 namespace orogen {
 
@@ -20,7 +21,10 @@ struct WallContactForce {
 };
 
 // Disc at (x, y) with velocity (vx, vy), spin omega and radius r; gamma_n, mass and xi_old
-// are the contact's own (WallContacts).
+// are the contact's own (WallContacts). Normal is a registered normal law
+// (contact/normal_laws.hpp); the tangential law is the wall's friction kind, each built from
+// the kernels of contact/law_kernels.hpp that the pair kernel uses too.
+template <class Normal>
 inline WallContactForce wall_contact_force(const Wall& w, double x, double y, double vx, double vy, double omega,
                                            double r, double gamma_n, double mass, double xi_old,
                                            const ContactLaw& law, double dt) {
@@ -39,39 +43,25 @@ inline WallContactForce wall_contact_force(const Wall& w, double x, double y, do
   const double rvy = vy - omega * r * ty - wvy;
   const double vn = rvx * nx + rvy * ny;  // > 0 when separating
   const double vt = rvx * tx + rvy * ty;
-  double fn = law.kn * delta - gamma_n * vn;
-  if (fn < 0) fn = 0;
-  double ft = 0;
-  double xi = 0;
-  const double limit = w.mu * fn;
+  const double fn = Normal::force(law.kn, delta, gamma_n, vn, r);  // a wall: the disc's radius
+  const double limit = w.mu * Normal::load(fn);
+  Tangential t{0.0, 0.0, false};  // smooth: no tangential force, no history
   switch (w.friction) {
     case WallFriction::Smooth:
       break;
     case WallFriction::Rough:
-      xi = xi_old + vt * dt;
-      ft = -law.ks * xi - law.tangential_damping_ratio * gamma_n * vt;
-      if (std::fabs(ft) > limit) {
-        ft = std::copysign(limit, ft);
-        xi = -ft / law.ks;
-        c.at_limit = true;
-      }
+      t = tangential_spring(xi_old, vt, dt, law.ks, law.tangential_damping_ratio * gamma_n, limit);
       break;
-    case WallFriction::Traction: {
+    case WallFriction::Traction:
       // Eq. 4.1 with the drag taken implicitly over the step, gamma / (1 + gamma dt / m):
       // stable for any gamma, and at most the force that brings a free disc to the
-      // plate's speed in one step.
-      const double gamma = w.traction_gamma / (1.0 + w.traction_gamma * dt / mass);
-      ft = -gamma * vt;
-      if (std::fabs(ft) > limit) {
-        ft = std::copysign(limit, ft);
-        c.at_limit = true;
-      }
-      xi = xi_old;  // traction keeps no spring; the history is left as it was
+      // plate's speed in one step. Traction keeps no spring; the history is left as it was.
+      t = viscous_traction(w.traction_gamma / (1.0 + w.traction_gamma * dt / mass), vt, limit, xi_old);
       break;
-    }
   }
   c.touching = true;
-  c.nx = nx; c.ny = ny; c.delta = delta; c.fn = fn; c.ft = ft; c.xi = xi;
+  c.at_limit = t.slip;
+  c.nx = nx; c.ny = ny; c.delta = delta; c.fn = fn; c.ft = t.ft; c.xi = t.xi;
   return c;
 }
 

@@ -3,18 +3,20 @@
 #include <utility>
 
 #include "boundary/wall_contact_law.hpp"
+#include "contact/normal_laws.hpp"
 
 namespace orogen {
 namespace {
 
 // Wall contacts [begin, end): force, history and flags of each, added onto its disc.
+template <class Normal>
 void contact_range(WallContacts& wc, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
                    double dt, DiscForce* forces, std::size_t begin, std::size_t end) {
   for (std::size_t k = begin; k < end; ++k) {
     const auto i = wc.disc[k];
     const double r = d.radius[i];
-    const WallContactForce c = wall_contact_force(walls[wc.wall[k]], d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i], r,
-                                                  wc.gamma_n[k], wc.mass[k], wc.xi[k], law, dt);
+    const WallContactForce c = wall_contact_force<Normal>(walls[wc.wall[k]], d.x[i], d.y[i], d.vx[i], d.vy[i],
+                                                          d.omega[i], r, wc.gamma_n[k], wc.mass[k], wc.xi[k], law, dt);
     wc.touching[k] = c.touching ? 1 : 0;
     wc.at_limit[k] = c.at_limit ? 1 : 0;
     wc.xi[k] = c.xi;
@@ -43,8 +45,11 @@ void wall_forces_share(NeighborList& L, const Discs& d, const std::vector<Wall>&
   };
   // The contacts of thread t's own discs, wall by wall: every disc still adds its wall forces
   // in wall order, whatever the number of threads.
-  for (std::size_t w = 0; w < walls.size(); ++w)
-    contact_range(wc, d, walls, law, dt, forces, first_at(w, split.disc[t]), first_at(w, split.disc[t + 1]));
+  with_normal_law(law.normal_force, [&](auto normal) {
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      contact_range<decltype(normal)>(wc, d, walls, law, dt, forces, first_at(w, split.disc[t]),
+                                      first_at(w, split.disc[t + 1]));
+  });
 }
 
 }  // namespace orogen

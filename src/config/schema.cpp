@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <system_error>
 
+#include "contact/normal_laws.hpp"
+
 namespace orogen {
 namespace {
 
@@ -81,7 +83,18 @@ const std::vector<KeySpec>& schema() {
       real("contact.ks_ratio", 0.5, gt(0), le(1), "tangential to normal stiffness k_s / k_n [-]"),
       real("contact.mu", 0.3, ge(0), none, "inter-particle friction coefficient [-]"),
       real("contact.mu_wall", 0.3, ge(0), none, "friction coefficient of rough walls [-]"),
-      real("contact.restitution", 0.2, ge(0.14), le(1), "normal coefficient of restitution [-]"),
+      text("contact.normal_force", "linear", normal_law_names(),
+           "normal force law: linear = k_n delta - gamma_n v_n clamped at zero (the dashpot never pulls), "
+           "linear_pull = the same without the clamp (LAMMPS gran/hooke/history); docs/model.md"),
+      text("contact.damping", "restitution", {"restitution", "per_mass"},
+           "how the normal dashpot gamma_n is set: restitution = from contact.restitution, the same for "
+           "pairs and walls (only with contact.normal_force = linear); per_mass = contact.damping_rate "
+           "times the contact's effective mass (LAMMPS's gamma_n; walls then rebound less than pairs)"),
+      real("contact.restitution", 0.2, ge(0.14), le(1),
+           "normal coefficient of restitution, with contact.damping = restitution [-]"),
+      real("contact.damping_rate", 0.0, ge(0), none,
+           "normal dashpot per unit effective mass gamma_n / m_eff, with contact.damping = per_mass "
+           "(LAMMPS gran/hooke/history's gamma_n) [sqrt(g/d)]"),
       real("contact.tangential_damping_ratio", 0.0, ge(0), le(1),
            "tangential to normal damping gamma_s / gamma_n [-]"),
 
@@ -147,6 +160,10 @@ const std::vector<KeySpec>& schema() {
            "end the run (recorded as not at rest) after this time [sqrt(d/g)]"),
       // [singly]: singly-vergent critical wedge (thesis 3.2.3, Appendix A)
       real("singly.speed", 0.025, gt(0), none, "backstop speed [sqrt(g d)]"),
+      text("singly.speed_bound", "warn", {"warn", "refuse", "off"},
+           "what a singly.speed above the quasi-static bound v dt < m g / k_n (thesis eq. 4.3, a rule for "
+           "the constant-velocity base, not a stability limit for a backstop) does: log a warning, refuse "
+           "the configuration, or nothing"),
       real("singly.mu_b", 0.2, ge(0), none, "basal (Coulomb) friction coefficient mu_b [-]"),
       real("singly.shortening", 5.0, gt(0), none, "run until the backstop has moved this far [h0]"),
       integer("singly.outputs", 50, ge(1), le(kMaxOutputs), "output steps over the run"),

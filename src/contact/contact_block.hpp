@@ -1,9 +1,13 @@
 #pragma once
-// The contact law of contact_law.hpp for a block of pairs at once, written without branches
-// so that the compiler can vectorise it. Same operations in the same order as contact_force,
-// so the results are bitwise identical (tests/test_contact_block.cpp checks it).
+// The disc-disc contact law (MODEL §3) for one pair, and for a block of pairs at once: the one
+// pair kernel, built from the branch-free pieces of contact/law_kernels.hpp and a registered
+// normal law (contact/normal_laws.hpp), so that the compiler can vectorise it. The pair loop,
+// the contact output and the tests all call it (tests/test_one_contact_law.cpp checks that
+// every user gets the same bits).
 #include <cmath>
 #include <cstdint>
+
+#include "contact/law_kernels.hpp"
 
 namespace orogen {
 
@@ -21,13 +25,20 @@ struct ContactBlock {
   alignas(64) std::int64_t touching[kContactBlock];  // as wide as a double: one vector type
 };
 
-// The contact law for one pair, without branches (the lanes of a vector loop): force on the
-// second disc, tangential force and new history; all zero for a pair that does not touch.
+// The law for one pair, without branches (the lanes of a vector loop): force on the second
+// disc, tangential force and new history, all zero for a pair that does not touch; and, for
+// the contact output (unused values cost nothing in the loops), the normal force, the unit
+// normal from the first disc to the second, the overlap and whether the Coulomb limit held.
 struct ContactLane {
   double fx, fy, ft, xi;
   bool touching;
+  double fn, nx, ny, delta;
+  bool at_limit;
 };
 
+// Second disc at (dx, dy) from the first, relative velocity (dvx, dvy), spins wi, wj; gn, gs
+// the pair's normal and tangential dashpots, xi_old its history.
+template <class Normal>
 inline ContactLane contact_lane(double dx, double dy, double ri, double rj, double dvx, double dvy, double wi,
                                 double wj, double gn, double gs, double xi_old, double kn, double ks, double mu,
                                 double dt) {
@@ -39,28 +50,30 @@ inline ContactLane contact_lane(double dx, double dy, double ri, double rj, doub
   const double nx = dx * inv, ny = dy * inv;
   const double tx = -ny, ty = nx;
   const double delta = rsum - dist;
+  // Relative velocity of j's contact point with respect to i's.
   const double rot = wi * ri + wj * rj;
-  const double vn = dvx * nx + dvy * ny;
-  const double vt = dvx * tx + dvy * ty - rot;
-  double fn = kn * delta - gn * vn;
-  fn = fn < 0 ? 0.0 : fn;
-  double xi = xi_old + vt * dt;
-  double ft = -ks * xi - gs * vt;
-  const double limit = mu * fn;
-  const bool slip = std::fabs(ft) > limit;
-  const double ft_limit = std::copysign(limit, ft);
-  const double xi_limit = -ft_limit / ks;  // computed unconditionally: no branch to vectorise
-  ft = slip ? ft_limit : ft;
-  xi = slip ? xi_limit : xi;
-  return {touching ? fn * nx + ft * tx : 0.0, touching ? fn * ny + ft * ty : 0.0, touching ? ft : 0.0,
-          touching ? xi : 0.0, touching};
+  const double vn = dvx * nx + dvy * ny;        // > 0 when separating
+  const double vt = dvx * tx + dvy * ty - rot;  // sliding along t
+  const double fn = Normal::force(kn, delta, gn, vn, ri * rj / rsum);
+  const Tangential t = tangential_spring(xi_old, vt, dt, ks, gs, mu * Normal::load(fn));
+  return {touching ? fn * nx + t.ft * tx : 0.0,
+          touching ? fn * ny + t.ft * ty : 0.0,
+          touching ? t.ft : 0.0,
+          touching ? t.xi : 0.0,
+          touching,
+          fn,
+          nx,
+          ny,
+          delta,
+          touching && t.slip};
 }
 
+template <class Normal>
 inline void contact_forces_block(ContactBlock& b, int count, double kn, double ks, double mu, double dt) {
 #pragma omp simd
   for (int k = 0; k < count; ++k) {
-    const ContactLane c = contact_lane(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k], b.wj[k],
-                                       b.gn[k], b.gs[k], b.xi[k], kn, ks, mu, dt);
+    const ContactLane c = contact_lane<Normal>(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k],
+                                               b.wj[k], b.gn[k], b.gs[k], b.xi[k], kn, ks, mu, dt);
     b.fx[k] = c.fx; b.fy[k] = c.fy; b.ft[k] = c.ft; b.xi[k] = c.xi;
     b.touching[k] = c.touching;
   }

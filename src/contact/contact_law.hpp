@@ -1,17 +1,23 @@
 #pragma once
-// The disc-disc contact law (MODEL §3): linear spring-dashpot normal force without pull,
-// tangential spring on the accumulated tangential displacement with a Coulomb limit.
+// The parameters of the contact law (MODEL §3) and the calibration of its normal dashpot. The
+// law itself is written once: contact/law_kernels.hpp (its pieces), contact/normal_laws.hpp
+// (the registered normal forces), contact/contact_block.hpp (a disc pair) and
+// boundary/wall_contact_law.hpp (a disc and a wall).
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace orogen {
 
 // How the normal dashpot is set. Restitution: gamma_n = 2 zeta sqrt(k_n m_eff) per pair, with
 // zeta chosen so that a head-on collision rebounds with the configured coefficient. PerMass:
-// gamma_n = m_eff * rate, the convention of LAMMPS gran/hooke (used by the benchmark).
+// gamma_n = m_eff * rate, the convention of LAMMPS gran/hooke (LAMMPS's gamma_n; the
+// benchmark uses it): a wall contact, whose m_eff is the disc's whole mass, is then damped
+// more strongly than a pair of equal discs (m_eff half a disc's mass).
 enum class NormalDamping { Restitution, PerMass };
 
 struct ContactLaw {
+  std::size_t normal_force = 0;  // index into NormalLaws (contact/normal_laws.hpp); 0 = linear
   double kn = 1e4;            // normal stiffness, m g / d
   double ks = 5e3;            // tangential stiffness
   double mu = 0.3;            // Coulomb friction coefficient
@@ -52,51 +58,5 @@ double contact_duration(double zeta, double omega0);
 // continuous formula would give a collision far more dissipative than asked for.
 double discrete_restitution(double zeta, double omega0_dt);
 double discrete_damping_ratio(double e, double omega0_dt);
-
-// Per-pair result of the contact kernel.
-struct PairForce {
-  double fx = 0, fy = 0;  // force on the second disc (the first feels minus this)
-  double ft = 0;          // tangential force component (for the torques -r_i ft, -r_j ft)
-  double fn = 0;          // normal force component (along n, from i to j)
-  bool at_limit = false;  // the tangential force sat on the Coulomb limit
-};
-
-// Computes the force between discs i and j given their relative geometry and kinematics.
-// n points from i to j; xi is the tangential spring history (updated in place).
-// Returns false (and zeroes xi) when the discs do not touch.
-inline bool contact_force(double dx, double dy, double ri, double rj, double dvx, double dvy,
-                          double wi, double wj, double kn, double ks, double mu, double gn,
-                          double gs, double dt, double& xi, PairForce& out) {
-  const double dist2 = dx * dx + dy * dy;
-  const double rsum = ri + rj;
-  if (dist2 >= rsum * rsum) {
-    xi = 0;
-    return false;
-  }
-  const double dist = std::sqrt(dist2);
-  const double inv = 1.0 / dist;
-  const double nx = dx * inv, ny = dy * inv;
-  const double tx = -ny, ty = nx;
-  const double delta = rsum - dist;
-  // Relative velocity of j's contact point with respect to i's.
-  const double rot = wi * ri + wj * rj;
-  const double vn = dvx * nx + dvy * ny;        // > 0 when separating
-  const double vt = dvx * tx + dvy * ty - rot;  // sliding along t
-  double fn = kn * delta - gn * vn;
-  if (fn < 0) fn = 0;
-  xi += vt * dt;
-  double ft = -ks * xi - gs * vt;
-  const double limit = mu * fn;
-  out.at_limit = std::fabs(ft) > limit;
-  if (out.at_limit) {
-    ft = std::copysign(limit, ft);
-    xi = -ft / ks;  // the spring sits on the Coulomb limit
-  }
-  out.fn = fn;
-  out.fx = fn * nx + ft * tx;
-  out.fy = fn * ny + ft * ty;
-  out.ft = ft;
-  return true;
-}
 
 }  // namespace orogen

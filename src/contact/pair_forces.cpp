@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "contact/contact_block.hpp"
+#include "contact/normal_laws.hpp"
 
 namespace orogen {
 namespace {
@@ -24,6 +25,7 @@ struct PairView {
 
 // Gathers the touching pairs among [p0, p0 + count) into the block (their pair numbers in
 // `pair`), zeroes the history of the others, and runs the block kernel on the touching ones.
+template <class Normal>
 int compute_block(const PairView& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t p0,
                   int count, ContactBlock& b, std::uint32_t* pair) {
   int m = 0;
@@ -40,20 +42,21 @@ int compute_block(const PairView& L, const DiscView& d, const ContactLaw& law, d
     b.xi[m] = L.xi[p];
     pair[m++] = static_cast<std::uint32_t>(p);
   }
-  contact_forces_block(b, m, law.kn, law.ks, law.mu, dt);
+  contact_forces_block<Normal>(b, m, law.kn, law.ks, law.mu, dt);
   for (int k = 0; k < m; ++k) L.xi[pair[k]] = b.xi[k];
   return m;
 }
 
 // Pairs [begin, end) in pair order, added onto the discs' forces, only the touching ones
 // through the kernel: for a loose chunk, where many pairs are apart.
+template <class Normal>
 void touching_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law, double dt,
                           std::size_t begin, std::size_t end, DiscForce* __restrict force) {
   ContactBlock b;
   std::uint32_t pair[kContactBlock];
   for (std::size_t p0 = begin; p0 < end; p0 += kContactBlock) {
     const int count = static_cast<int>(std::min<std::size_t>(kContactBlock, end - p0));
-    const int m = compute_block(L, d, law, dt, p0, count, b, pair);
+    const int m = compute_block<Normal>(L, d, law, dt, p0, count, b, pair);
     for (int k = 0; k < m; ++k) {
       const auto i = L.first[pair[k]], j = L.second[pair[k]];
       force[i].fx -= b.fx[k]; force[i].fy -= b.fy[k]; force[i].torque += -b.ri[k] * b.ft[k];
@@ -69,6 +72,7 @@ void touching_pair_forces(const PairView& L, const DiscView& d, const ContactLaw
 // would have given it: zero history, and a zero force and torque that change no sum (the sums
 // start at +0.0, and a sum that starts at +0.0 never becomes -0.0 when rounding to nearest, so
 // adding +0.0 or -0.0 leaves it as it is): the sums are bitwise those of touching_pair_forces.
+template <class Normal>
 void all_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t begin,
                      std::size_t end, DiscForce* __restrict force) {
   alignas(64) double fx[kContactBlock], fy[kContactBlock], ft[kContactBlock];
@@ -84,9 +88,9 @@ void all_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law
     for (int k = 0; k < count; ++k) {
       const auto i = first[k], j = second[k];
       const ContactLane c =
-          contact_lane(d.x[j] - d.x[i], d.y[j] - d.y[i], d.radius[i], d.radius[j], d.vx[j] - d.vx[i],
-                       d.vy[j] - d.vy[i], d.omega[i], d.omega[j], gamma_n[k], damping_ratio * gamma_n[k], xi[k], kn,
-                       ks, mu, dt);
+          contact_lane<Normal>(d.x[j] - d.x[i], d.y[j] - d.y[i], d.radius[i], d.radius[j], d.vx[j] - d.vx[i],
+                               d.vy[j] - d.vy[i], d.omega[i], d.omega[j], gamma_n[k], damping_ratio * gamma_n[k],
+                               xi[k], kn, ks, mu, dt);
       fx[k] = c.fx; fy[k] = c.fy; ft[k] = c.ft; xi[k] = c.xi;
     }
     for (int k = 0; k < count; ++k) {
@@ -94,6 +98,27 @@ void all_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law
       force[i].fx -= fx[k]; force[i].fy -= fy[k]; force[i].torque += -d.radius[i] * ft[k];
       force[j].fx += fx[k]; force[j].fy += fy[k]; force[j].torque += -d.radius[j] * ft[k];
     }
+  }
+}
+
+// Thread t's even chunks, then its odd ones, with the normal law Normal (one instance of the
+// loops per registered law, chosen once per step).
+template <class Normal>
+void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& d, const ContactLaw& law, double dt,
+                  DiscForce* force, const ThreadSplit& split, std::size_t t) {
+  // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in parallel
+  // without races, and every disc sums its pairs in the same order for any number of threads.
+  const std::ptrdiff_t begin = split.chunk[t], end = split.chunk[t + 1];
+  for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
+    for (std::ptrdiff_t k = begin + ((begin & 1) != parity); k < end; k += 2) {
+      const auto kk = static_cast<std::size_t>(k);
+      // Either way gives the same bits; the hint is missing right after a resume.
+      if (kk < L.chunk_dense.size() && L.chunk_dense[kk])
+        all_pair_forces<Normal>(pairs, d, law, dt, L.chunk_start[kk], L.chunk_start[kk + 1], force);
+      else
+        touching_pair_forces<Normal>(pairs, d, law, dt, L.chunk_start[kk], L.chunk_start[kk + 1], force);
+    }
+#pragma omp barrier
   }
 }
 
@@ -106,20 +131,9 @@ void pair_forces_share(NeighborList& L, const Discs& discs, const ContactLaw& la
   const PairView pairs{L.first.data(), L.second.data(), L.gamma_n.data(), L.xi.data()};
   for (std::ptrdiff_t i = split.disc[t]; i < split.disc[t + 1]; ++i) force[i] = {0.0, 0.0, 0.0};
 #pragma omp barrier
-  // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in parallel
-  // without races, and every disc sums its pairs in the same order for any number of threads.
-  const std::ptrdiff_t begin = split.chunk[t], end = split.chunk[t + 1];
-  for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
-    for (std::ptrdiff_t k = begin + ((begin & 1) != parity); k < end; k += 2) {
-      const auto kk = static_cast<std::size_t>(k);
-      // Either way gives the same bits; the hint is missing right after a resume.
-      if (kk < L.chunk_dense.size() && L.chunk_dense[kk])
-        all_pair_forces(pairs, d, law, dt, L.chunk_start[kk], L.chunk_start[kk + 1], force);
-      else
-        touching_pair_forces(pairs, d, law, dt, L.chunk_start[kk], L.chunk_start[kk + 1], force);
-    }
-#pragma omp barrier
-  }
+  with_normal_law(law.normal_force, [&](auto normal) {
+    chunk_forces<decltype(normal)>(L, pairs, d, law, dt, force, split, t);
+  });
 }
 
 }  // namespace orogen

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "config/config.hpp"
+#include "contact/normal_laws.hpp"
 #include "experiments/experiment.hpp"
 
 namespace orogen {
@@ -12,8 +13,19 @@ void apply_engine_config(const Config& c, World& w) {
   w.law.kn = c.get_float("contact.kn");
   w.law.ks = c.get_float("contact.ks_ratio") * w.law.kn;
   w.law.mu = c.get_float("contact.mu");
-  w.law.damping = NormalDamping::Restitution;
+  w.law.normal_force = normal_law_index(c.get_string("contact.normal_force"));  // a name the schema allows
+  const bool per_mass = c.get_string("contact.damping") == "per_mass";
+  w.law.damping = per_mass ? NormalDamping::PerMass : NormalDamping::Restitution;
   w.law.restitution = c.get_float("contact.restitution");
+  w.law.damping_rate = c.get_float("contact.damping_rate");
+  bool calibrated = true;  // whether the restitution calibration holds for the normal law
+  with_normal_law(w.law.normal_force, [&](auto law) { calibrated = law.restitution_damping; });
+  if (!per_mass && !calibrated)
+    throw config_error(c.sources_of({"contact.damping", "contact.normal_force"}), "contact.damping",
+                       c.get_string("contact.damping"),
+                       fmt::format("\"per_mass\" with contact.normal_force = \"{}\" (the restitution calibration "
+                                   "is the clamped linear law's); give the dashpot as contact.damping_rate",
+                                   c.get_string("contact.normal_force")));
   w.law.tangential_damping_ratio = c.get_float("contact.tangential_damping_ratio");
   w.neighbors.skin = c.get_float("neighbor.skin");
   w.sort_every = c.get_int32("neighbor.sort_every");

@@ -65,7 +65,7 @@ SettleSpec settle_spec(const Config& c) {
   return s;
 }
 
-void check_imposed_speed(const Config& c, const std::string& key) {
+std::string imposed_speed_excess(const Config& c, const std::string& key) {
   const double v = c.get_float(key);
   const double kn = c.get_float("contact.kn");
   const double d_min = c.get_float("particles.d_min");
@@ -73,16 +73,34 @@ void check_imposed_speed(const Config& c, const std::string& key) {
   const double limit = stable_time_step(kn, 0.5 * m_min);
   const double dt = c.get_float("time.dt") > 0 ? c.get_float("time.dt") : c.get_float("time.dt_fraction") * limit;
   const double overlap = m_min / kn;
-  if (dt > limit) return;  // apply_engine_config refuses the time step itself
-  if (v * dt >= overlap) {
-    const std::vector<std::string_view> keys = {key, "contact.kn", "particles.d_min", "time.dt", "time.dt_fraction"};
-    throw config_error(c.sources_of(keys), key, fmt::format("{}", v),
-                       fmt::format("the boundary would move {:.3g} d per step, more than the gravitational contact "
-                                   "overlap m g / k_n = {:.3g} d of the smallest disc (thesis eq. 4.3); "
-                                   "use {} < {:.4g}, or a smaller time step (time.dt, time.dt_fraction) or a "
-                                   "stiffer contact.kn; the bound comes from {}",
-                                   v * dt, overlap, key, overlap / dt, c.describe(keys)));
+  if (dt > limit) return {};  // apply_engine_config refuses the time step itself
+  if (v * dt < overlap) return {};
+  const std::vector<std::string_view> keys = {key, "contact.kn", "particles.d_min", "time.dt", "time.dt_fraction"};
+  return fmt::format("the boundary would move {:.3g} d per step, more than the gravitational contact "
+                     "overlap m g / k_n = {:.3g} d of the smallest disc (thesis eq. 4.3); "
+                     "use {} < {:.4g}, or a smaller time step (time.dt, time.dt_fraction) or a "
+                     "stiffer contact.kn; the bound comes from {}",
+                     v * dt, overlap, key, overlap / dt, c.describe(keys));
+}
+
+void check_imposed_speed(const Config& c, const std::string& key) {
+  const std::string excess = imposed_speed_excess(c, key);
+  if (!excess.empty())
+    throw config_error(c.sources_of({key, "contact.kn", "particles.d_min", "time.dt", "time.dt_fraction"}), key,
+                       fmt::format("{}", c.get_float(key)), excess);
+}
+
+std::vector<std::string> config_warnings(const Config& c) {
+  std::vector<std::string> out;
+  if (c.get_string("run.experiment") == "singly_vergent" && c.get_string("singly.speed_bound") == "warn") {
+    const std::string excess = imposed_speed_excess(c, "singly.speed");
+    if (!excess.empty())
+      out.push_back(fmt::format("singly.speed = {}: {}. For the backstop this is a quasi-static rule, not a "
+                                "stability limit (docs/model.md); singly.speed_bound = \"off\" silences this, "
+                                "\"refuse\" refuses it",
+                                c.get_float("singly.speed"), excess));
   }
+  return out;
 }
 
 }  // namespace orogen

@@ -20,9 +20,16 @@ SettleSpec settle_spec(const Config& config);
 void check_material_size(const Config& config, double length, double thickness,
                          const std::vector<std::string_view>& size_keys);
 
-// Thesis eq. 4.3: a boundary that pushes the material (a plate, a backstop) must move less per
-// step than the gravitational contact overlap m g / k_n of the smallest disc; the speed is the
-// value of `key`. Throws ConfigError otherwise.
+// Thesis eq. 4.3: the constant-velocity base must move less per step than the gravitational
+// contact overlap m g / k_n of the smallest disc (the speed is the value of `key`). The excess
+// as a message naming the keys, or empty when the speed keeps the bound; check_imposed_speed
+// throws ConfigError with it. For a backstop it is a quasi-static rule, not a stability limit
+// (docs/model.md, "Singly-vergent critical wedge"): singly.speed_bound picks what it does.
+std::string imposed_speed_excess(const Config& config, const std::string& key);
 void check_imposed_speed(const Config& config, const std::string& key);
+
+// What the configuration allows but the log should say (the run driver logs each line): a
+// singly.speed above the bound with singly.speed_bound = "warn".
+std::vector<std::string> config_warnings(const Config& config);
 
 }  // namespace orogen

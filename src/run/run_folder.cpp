@@ -28,9 +28,22 @@ constexpr std::array<const char*, 13> kRunOutputs = {"checkpoint.bin", "snapshot
                                                      "packing.xmf"};
 
 // Keys that change how fast or how visibly a run goes, never what it computes.
-constexpr std::array<std::string_view, 6> kKeysOutsideIdentity = {"run.threads",     "run.adapt_threads",
-                                                                  "run.adapt_slice", "output.progress",
-                                                                  "output.checkpoint_every", "output.vtp"};
+constexpr std::array<std::string_view, 7> kKeysOutsideIdentity = {
+    "run.threads",     "run.adapt_threads",       "run.adapt_slice",    "output.progress",
+    "output.checkpoint_every", "output.vtp", "singly.speed_bound"};
+
+// Keys added after runs were made whose defaults compute what those runs computed: a run
+// started before they existed keeps its identity and resumes. They enter the identity only
+// when set away from their defaults, and one absent from a stored configuration (a checkpoint
+// of such a run) stands for its default.
+constexpr std::array<std::string_view, 4> kLaterKeys = {"contact.normal_force", "contact.damping",
+                                                        "contact.damping_rate", "singly.speed_bound"};
+
+bool is_later_key(std::string_view key) {
+  return std::find(kLaterKeys.begin(), kLaterKeys.end(), key) != kLaterKeys.end();
+}
+
+const std::map<std::string, std::string>& default_values();
 
 constexpr std::array<std::string_view, 2> kExtensionKeys = {"wedge.s_end", "wedge.outputs"};
 
@@ -114,9 +127,23 @@ int remove_temporary_files(const fs::path& dir) {
   return removed;
 }
 
+namespace {
+const std::map<std::string, std::string>& default_values() {
+  static const std::map<std::string, std::string> defaults = key_values(Config().to_toml());
+  return defaults;
+}
+
+// The key-value pairs of a stored configuration, a later key it lacks at its default.
+std::map<std::string, std::string> stored_key_values(std::string_view toml) {
+  auto kv = key_values(toml);
+  for (const auto key : kLaterKeys) kv.emplace(std::string(key), default_values().at(std::string(key)));
+  return kv;
+}
+}  // namespace
+
 std::string config_differences(std::string_view here, std::string_view there, std::string_view here_name,
                                std::string_view there_name) {
-  const auto a = key_values(here), b = key_values(there);
+  const auto a = stored_key_values(here), b = stored_key_values(there);
   std::string out;
   auto add = [&](const std::string& key, const std::string& va, const std::string& vb) {
     out += fmt::format("{}{} = {} in {}, {} in {}", out.empty() ? "" : "; ", key, va.empty() ? "(absent)" : va,
@@ -156,10 +183,12 @@ std::string extension_keys_text() { return fmt::format("{}", fmt::join(kExtensio
 
 std::string run_identity(const Config& config) {
   std::string text;
-  for (const auto& [key, value] : key_values(config.to_toml()))
+  for (const auto& [key, value] : key_values(config.to_toml())) {
+    if (is_later_key(key) && default_values().at(key) == value) continue;
     if (std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) == kKeysOutsideIdentity.end() &&
         !is_extension_key(key) && !is_analysis_key(key))
       text += key + "=" + value + "\n";
+  }
   return fmt::format("{:016x}", fnv1a64(text));
 }
 

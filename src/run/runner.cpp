@@ -16,6 +16,7 @@
 #include "analysis/contact_output.hpp"
 #include "config/config.hpp"
 #include "experiments/experiment.hpp"
+#include "experiments/spec_from_config.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv_series.hpp"
 #include "io/snapshot_reader.hpp"
@@ -557,6 +558,7 @@ int run_command(const RunOptions& opt) {
     spdlog::register_logger(logger);
     logger->info("orogen {} {} in {} with {} thread(s)", OROGEN_VERSION, opt.resume ? "resume" : "run",
                  opt.out.string(), omp_get_max_threads());
+    for (const auto& warning : config_warnings(config)) logger->warn("{}", warning);
     if (stale > 0) logger->info("removed {} temporary file(s) left by a killed write", stale);
     if (source)
       logger->info("branch of {} at output {} (step {}, t = {:.6g}), its state {}", source->dir.string(), source->output,
