@@ -20,7 +20,8 @@ std::size_t World::wall_index(std::string_view name) const {
   std::string there;
   for (std::size_t k = 0; k < walls.size(); ++k) {
     if (walls[k].name == name) return k;
-    there += (there.empty() ? "" : ", ") + walls[k].name;
+    if (!there.empty()) there += ", ";
+    there += walls[k].name;
   }
   throw std::invalid_argument(
       fmt::format("no wall named '{}' in this world (walls: {})", name, there.empty() ? "none" : there));
