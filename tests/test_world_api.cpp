@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "world/world.hpp"
@@ -29,25 +30,27 @@ World sliding_pair() {
 TEST(StageHooks, RunInOrderOncePerStepAtTheirStage) {
   World w;
   w.add_disc(0, 5, 0.5);  // falls freely under gravity
-  std::vector<std::string> seen;
+  std::vector<std::pair<char, std::uint64_t>> seen;  // (hook, step)
   double y_before = 0;
   w.hooks.add(Stage::AfterIntegration, "c", [&](World& world) {
-    seen.push_back("c" + std::to_string(world.step));
+    seen.emplace_back('c', world.step);
     EXPECT_LT(world.discs.y[0], y_before);  // the disc has moved, the clock not yet
   });
   w.hooks.add(Stage::AfterForces, "a", [&](World& world) {
-    seen.push_back("a" + std::to_string(world.step));
+    seen.emplace_back('a', world.step);
     EXPECT_EQ(world.discs.y[0], y_before);  // forces summed, nothing moved yet
   });
-  w.hooks.add(Stage::AfterForces, "b", [&](World& world) { seen.push_back("b" + std::to_string(world.step)); });
+  w.hooks.add(Stage::AfterForces, "b", [&](World& world) { seen.emplace_back('b', world.step); });
   // The same name again replaces the hook rather than running it twice.
-  w.hooks.add(Stage::AfterForces, "b", [&](World& world) { seen.push_back("B" + std::to_string(world.step)); });
+  w.hooks.add(Stage::AfterForces, "b", [&](World& world) { seen.emplace_back('B', world.step); });
   EXPECT_EQ(w.hooks.names(Stage::AfterForces), (std::vector<std::string>{"a", "b"}));
   for (int s = 0; s < 3; ++s) {
     y_before = w.discs.y[0];
     w.advance();
   }
-  EXPECT_EQ(seen, (std::vector<std::string>{"a0", "B0", "c0", "a1", "B1", "c1", "a2", "B2", "c2"}));
+  const std::vector<std::pair<char, std::uint64_t>> expected = {{'a', 0}, {'B', 0}, {'c', 0}, {'a', 1}, {'B', 1},
+                                                                {'c', 1}, {'a', 2}, {'B', 2}, {'c', 2}};
+  EXPECT_EQ(seen, expected);
   w.hooks.remove("a");
   EXPECT_EQ(w.hooks.names(Stage::AfterForces), (std::vector<std::string>{"b"}));
 }
