@@ -82,7 +82,6 @@ double box_width(std::size_t n) { return 200.0 * std::sqrt(static_cast<double>(n
 
 // Walls: floor y = 0, side walls x = 0 and x = W, all rough with mu. Segments reach well past
 // the pile so no disc meets an end point (the left wall may travel right by vpush * t).
-enum WallIndex { kFloor = 0, kLeft = 1, kRight = 2 };
 
 void make_walls(World& w, double W, double top, double mu) {
   auto wall = [&](const char* name, double ax, double ay, double bx, double by) {
@@ -243,7 +242,7 @@ Result run_stage(const World& settled, const std::string& mode, int threads, std
                  double vpush) {
   World w = settled;  // fresh copy of the settled state for every measurement
   omp_set_num_threads(threads);
-  if (mode == "push") w.walls[kLeft].vx = vpush;
+  if (mode == "push") w.set_wall_velocity("left", vpush, 0.0);
   // Build the list outside the timed part, as LAMMPS's setup does before "Loop time".
   if (!w.neighbors.valid) {
     build_neighbor_list(w.neighbors, w.discs, w.clusters, w.walls, w.law, w.dt, true);

@@ -231,6 +231,10 @@ TEST_F(Cli, EveryExperimentSameOutputsForOneAndTwoThreads) {
       {"wedge", "--set run.experiment=wedge --set layer.thickness=5 --set wedge.tile_length=4"
                 " --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.s_end=0.2 --set wedge.outputs=4"
                 " --set wedge.erosion_height=0.9"},
+      // Constant velocity: its pinning hook runs inside the step's thread team.
+      {"wedge_cv", "--set run.experiment=wedge --set layer.thickness=5 --set wedge.tile_length=4"
+                   " --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.s_end=0.2 --set wedge.outputs=4"
+                   " --set wedge.basal=constant_velocity"},
       // The same with the thread count switched between 2 and 1 every few milliseconds.
       {"wedge_switching", "--set run.experiment=wedge --set layer.thickness=5 --set wedge.tile_length=4"
                           " --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.s_end=0.2"
@@ -523,6 +527,22 @@ TEST_F(Cli, WedgeResumeAfterKillIsBitwiseIdentical) {
   EXPECT_NE(slurp(a / "removals.csv").find("eroded"), std::string::npos);
   expect_same_bytes(a / "series.csv", b / "series.csv");
   expect_same_bytes(a / "removals.csv", b / "removals.csv");
+  expect_same_bytes(a / "checkpoint.bin", b / "checkpoint.bin");
+  expect_same_snapshots(a / "snapshots.h5", b / "snapshots.h5");
+}
+
+TEST_F(Cli, ConstantVelocityWedgeResumeIsBitwiseIdentical) {
+  // The pinning hook is added again after the checkpoint is loaded; what it depends on (the
+  // pinned discs, their motion, the wall contacts) crosses the resume.
+  const std::string small =
+      " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
+      " --set wedge.basal=constant_velocity --set wedge.s_end=0.3 --set wedge.outputs=6 --set output.checkpoint_every=2"
+      " --set output.progress=never --set output.vtp=false --threads 2";
+  const fs::path a = dir_ / "whole", b = dir_ / "killed";
+  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "'" + small, dir_).status, 0);
+  EXPECT_NE(orogen_cli("run --out '" + b.string() + "'" + small + " --abort-after-outputs 3", dir_).status, 0);
+  ASSERT_EQ(orogen_cli("run --resume '" + b.string() + "'", dir_).status, 0);
+  expect_same_bytes(a / "series.csv", b / "series.csv");
   expect_same_bytes(a / "checkpoint.bin", b / "checkpoint.bin");
   expect_same_snapshots(a / "snapshots.h5", b / "snapshots.h5");
 }

@@ -34,13 +34,13 @@ std::vector<SummaryValue> run_singly(double mu_b) {
   World w;
   apply_engine_config(c, w);
   exp->setup(w);
-  const double backstop0 = w.walls[kBoxRight].ax;
+  const double backstop0 = w.wall(kBoxRight).ax;
   // Outputs as the runner takes them, for the steady-state statistics.
   const double interval = exp->output_interval().value();
   double next = 0;
   while (exp->advance(w))
     if (w.time >= next) { exp->after_output(w); next += interval; }
-  EXPECT_NEAR(backstop0 - w.walls[kBoxRight].ax, 3 * 8.0, 0.01);
+  EXPECT_NEAR(backstop0 - w.wall(kBoxRight).ax, 3 * 8.0, 0.01);
   return exp->summary(w);
 }
 

@@ -323,6 +323,52 @@ TEST(Wedge, BothBasalConditionsCarryTheLayerAtThePlateSpeed) {
   }
 }
 
+// Constant velocity holds a disc at rest from the step it first touches the retro base (a
+// hook after the forces of every step). Before, the pinning ran every 100 steps after the
+// step, so a disc that touched the base slid for up to 100 steps. Traction has no hook.
+TEST(Wedge, ConstantVelocityPinsADiscTouchingTheRetroBaseAtTheNextStep) {
+  WedgeRun traction({"wedge.basal=traction", "wedge.s_end=1"});
+  EXPECT_TRUE(traction.w.hooks.empty(Stage::AfterForces));
+
+  WedgeRun r({"wedge.basal=constant_velocity", "wedge.s_end=1"});
+  EXPECT_EQ(r.w.hooks.names(Stage::AfterForces), std::vector<std::string>{"wedge.pin_retro_base"});
+  for (int s = 0; s < 150; ++s) ASSERT_TRUE(r.exp->advance(r.w));
+  ASSERT_NE(r.w.step % 100, 0u);  // the next step is no housekeeping step
+  // A body (disc or cluster) held on the retro base, released and set sliding: it touches the
+  // base again in the next step's force pass.
+  auto& wedge = dynamic_cast<WedgeExperiment&>(*r.exp);
+  const auto& d = r.w.discs;
+  const auto& c = r.w.clusters;
+  std::size_t i = d.size();
+  for (std::size_t k = 0; k < d.size() && i == d.size(); ++k)
+    if (!d.is_dynamic(k) && d.x[k] > 2 && d.x[k] < 3 * kH0 && d.y[k] < d.radius[k]) i = k;
+  ASSERT_LT(i, d.size()) << "nothing pinned on the retro base";
+  const std::int64_t id = d.id[i];
+  const auto k = d.cluster[i];
+  auto member_ids = [&] {
+    std::vector<std::size_t> ids;
+    const auto j = index_of_id(d, id);
+    if (d.cluster[j] < 0) return std::vector<std::size_t>{static_cast<std::size_t>(id)};
+    for (auto m : c.members[static_cast<std::size_t>(d.cluster[j])])
+      if (m >= 0) ids.push_back(static_cast<std::size_t>(d.id[static_cast<std::size_t>(m)]));
+    return ids;
+  };
+  for (auto m : member_ids()) wedge.pinned_.at(m) = 0;
+  r.w.edit_motion([&](MotionEdit& e) { e.body_of(i, Motion::Dynamic); });
+  (k >= 0 ? r.w.clusters.vx[static_cast<std::size_t>(k)] : r.w.discs.vx[i]) = 0.01;
+  const double x = k >= 0 ? c.x[static_cast<std::size_t>(k)] : d.x[i];
+  ASSERT_TRUE(r.exp->advance(r.w));
+  const auto j = index_of_id(d, id);
+  ASSERT_LT(j, d.size());
+  int pinned = 0;
+  for (auto m : member_ids()) pinned += wedge.pinned_.at(m);
+  EXPECT_GE(pinned, 1);
+  EXPECT_FALSE(d.is_dynamic(j));
+  EXPECT_EQ(d.vx[j], 0.0);
+  const auto kj = d.cluster[j];
+  EXPECT_EQ(kj >= 0 ? c.x[static_cast<std::size_t>(kj)] : d.x[j], x);  // held before it moved in this step
+}
+
 // A wedge grows over the S-point. In layers of 5-8 discs the model does not localise there
 // (the pro layer stalls on its base and thickens throughout), so this runs the default wedge at
 // h0 = 10 d (the main job's resolution) to S = 2, with soft contacts (k_n = 2000) and a doubled

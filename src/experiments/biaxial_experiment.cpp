@@ -26,10 +26,10 @@ constexpr double kNormalX[] = {0, 0, 1, -1};
 constexpr double kNormalY[] = {1, -1, 0, 0};
 
 double sample_width(const World& w) {
-  return w.walls[BiaxialExperiment::kRight].ax - w.walls[BiaxialExperiment::kLeft].ax;
+  return w.wall("right").ax - w.wall("left").ax;
 }
 double sample_height(const World& w) {
-  return w.walls[BiaxialExperiment::kTop].ay - w.walls[BiaxialExperiment::kBottom].ay;
+  return w.wall("top").ay - w.wall("bottom").ay;
 }
 
 double mean_kinetic_energy(const World& w) {
@@ -46,8 +46,8 @@ double solid_area(const Discs& d) {
 
 void BiaxialExperiment::setup(World& w) {
   // Settled frictionless (settle.mu, also through the packing's relax phase), like every packing.
-  mu_ = w.law.mu;
-  w.law.mu = spec_.settle.mu;
+  mu_ = w.friction();
+  w.set_friction(spec_.settle.mu);
   PackingSpec p = spec_.packing;
   p.length = spec_.width;
   p.thickness = spec_.height;
@@ -65,8 +65,7 @@ void BiaxialExperiment::setup(World& w) {
   Wall upper{.name = "top", .ax = -0.5 * W, .ay = top, .bx = 1.5 * W, .by = top};
   Wall left{.name = "left", .ax = 0, .ay = -0.5 * top, .bx = 0, .by = 1.5 * top};
   Wall right{.name = "right", .ax = W, .ay = -0.5 * top, .bx = W, .by = 1.5 * top};
-  w.walls = {bottom, upper, left, right};
-  w.invalidate_neighbors();
+  w.set_walls({bottom, upper, left, right});
 
   sigma3_code_ = spec_.sigma3 * kUnitDiscMass;
   phase_ = Consolidating;
@@ -80,7 +79,8 @@ std::array<double, 4> BiaxialExperiment::wall_stresses(const World& w) const {
   const double width = sample_width(w), height = sample_height(w);
   std::array<double, 4> s{};
   for (std::size_t k = 0; k < 4; ++k) {
-    const double load = -(f[k].fx * kNormalX[k] + f[k].fy * kNormalY[k]);
+    const WallForce& fk = f[w.wall_index(kWallNames[k])];
+    const double load = -(fk.fx * kNormalX[k] + fk.fy * kNormalY[k]);
     s[k] = load / (k < kLeft ? width : height);
   }
   return s;
@@ -92,15 +92,14 @@ void BiaxialExperiment::servo(World& w, const std::array<double, 4>& s, bool top
   const double per_stress = spec_.servo_gain * spec_.packing.d_max / (w.law.kn * w.dt);
   for (std::size_t k = top_too ? kTop : kLeft; k <= kRight; ++k) {
     const double out = per_stress * (s[k] - sigma3_code_);
-    w.walls[k].vx = -out * kNormalX[k];
-    w.walls[k].vy = -out * kNormalY[k];
+    w.set_wall_velocity(kWallNames[k], -out * kNormalX[k], -out * kNormalY[k]);
   }
 }
 
 bool BiaxialExperiment::advance(World& w) {
   if (phase_ == Done) return false;
   // Set every step: a resumed run's engine configuration brings contact.mu back.
-  w.law.mu = phase_ == Consolidating ? spec_.settle.mu : mu_;
+  w.set_friction(phase_ == Consolidating ? spec_.settle.mu : mu_);
   w.advance();
   latest_ = wall_stresses(w);
   for (std::size_t k = 0; k < 4; ++k) output_sum_[k] += latest_[k];
@@ -130,7 +129,7 @@ bool BiaxialExperiment::advance(World& w) {
 
   servo(w, latest_, false);
   if (axial_strain(w) >= spec_.strain_end) {
-    for (auto& wall : w.walls) wall.vx = wall.vy = 0;
+    for (const auto name : kWallNames) w.set_wall_velocity(name, 0, 0);
     phase_ = Done;
     return false;
   }
@@ -142,8 +141,7 @@ void BiaxialExperiment::start_shearing(World& w) {
   a0_ = sample_width(w) * h0_;
   coordination_start_ = measure_contacts(w).contacts_per_disc;
   solid_fraction_start_ = solid_area(w.discs) / a0_;
-  w.walls[kTop].vx = 0;
-  w.walls[kTop].vy = -spec_.strain_rate * h0_;  // constant speed: the strain rate is nominal (of H0)
+  w.set_wall_velocity("top", 0, -spec_.strain_rate * h0_);  // constant speed: the strain rate is nominal (of H0)
   output_sum_ = {};
   output_steps_ = 0;
   phase_ = Shearing;

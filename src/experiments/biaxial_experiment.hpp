@@ -1,4 +1,6 @@
 #pragma once
+#include <array>
+#include <string_view>
 // The biaxial test (MODEL §9: the bulk friction angle phi of the particle material, which the
 // critical taper needs, has to be measured): a settled sample in a box of four smooth walls,
 // without gravity, first consolidated isotropically to the confining stress sigma_3, then
@@ -57,8 +59,9 @@ class BiaxialExperiment final : public Experiment {
   // The results so far (rows recorded at output steps while shearing).
   BiaxialResults results() const;
 
-  // Wall order in World::walls.
+  // The four walls: their names (World::wall), in the order of the stress arrays.
   enum WallIndex : std::size_t { kBottom = 0, kTop = 1, kLeft = 2, kRight = 3 };
+  static constexpr std::array<std::string_view, 4> kWallNames = {"bottom", "top", "left", "right"};
 
  private:
   // Compressive stresses on the four walls now, from their elastic contact forces (code units).

@@ -32,8 +32,11 @@ struct SummaryValue {
 class Experiment {
  public:
   virtual ~Experiment() = default;
-  // Builds the initial world of a fresh run.
+  // Builds the initial world of a fresh run (and attaches, below).
   virtual void setup(World& world) = 0;
+  // Adds the experiment's stage hooks to the world it runs (World::hooks); setup() calls it,
+  // the run driver calls it again after load(). Adding a hook again replaces it.
+  virtual void attach(World&) {}
   // Advances one step with the experiment's own stages; false once the experiment is done.
   virtual bool advance(World& world) = 0;
   // Columns of series.csv and one row of them for the current state.

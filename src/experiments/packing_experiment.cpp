@@ -20,7 +20,7 @@ namespace {
 void PackingExperiment::setup(World& w) {
   place_packing(w, packing_);
   w.body.drag = settle_.drag;
-  mu_ = w.law.mu;
+  mu_ = w.friction();
   phase_ = Falling;
   phase_start_time_ = 0;
 }
@@ -32,7 +32,7 @@ double PackingExperiment::mean_kinetic_energy(const World& w) const {
 
 bool PackingExperiment::advance(World& w) {
   if (phase_ == Done) return false;
-  w.law.mu = phase_ < Relaxing ? settle_.mu : mu_;
+  w.set_friction(phase_ < Relaxing ? settle_.mu : mu_);
   w.advance();
   if (w.step % check_every_ != 0) return true;
   if (w.time > settle_.max_time)
@@ -59,7 +59,7 @@ bool PackingExperiment::advance(World& w) {
       if (at_rest && w.time - phase_start_time_ >= settle_.relax_time) {
         record_initial_state(w, 0.0, packing_.length, settle_.column_width_factor * mean_radius(w.discs));
         phase_ = Done;
-        w.law.mu = mu_;
+        w.set_friction(mu_);
         return false;
       }
       break;

@@ -38,13 +38,14 @@ void ReposeExperiment::setup(World& w) {
   std::vector<std::uint8_t> fix(d.size(), 0);
   if (spec_.variant == ReposeVariant::Slump) {
     // The whole right wall goes; the lowermost particles are held so the block cannot slide out.
-    w.walls[kBoxRight].enabled = false;
+    w.enable_wall(kBoxRight, false);
     for (std::size_t i = 0; i < d.size(); ++i) fix[i] = d.y[i] < spec_.fixed_height;
     base_ = spec_.fixed_height + spec_.packing.d_max;
   } else {
     // The lower part of the wall stays, and the particles touching it are fixed (thesis 3.2.2).
     const double lip = spec_.ledge_fraction * top_;
-    w.walls[kBoxRight].by = lip;
+    const Wall& right = w.wall(kBoxRight);
+    w.set_wall_ends(kBoxRight, right.ax, right.ay, right.bx, lip);
     for (std::size_t i = 0; i < d.size(); ++i)
       fix[i] = d.y[i] < lip && d.x[i] + d.radius[i] > spec_.size - 0.05 * spec_.packing.d_min;
     base_ = lip + spec_.packing.d_max;

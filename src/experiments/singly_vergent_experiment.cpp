@@ -18,7 +18,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::uint64_t kHousekeepingEvery = 100;
 constexpr std::size_t kMaxGap = 2;  // surface columns below the raised level inside the wedge
-constexpr std::size_t kBackstop = kBoxRight;  // the box's right wall; the left one is the far wall
+constexpr std::string_view kBackstop = kBoxRight;  // the box's right wall; the left one is the far wall
 
 }  // namespace
 
@@ -27,12 +27,12 @@ void SinglyVergentExperiment::setup(World& w) {
   p.length = spec_.length;
   p.thickness = spec_.h0;
   settle_layer(w, p, spec_.settle);
-  w.walls[kBoxFloor].friction = WallFriction::Rough;
-  w.walls[kBoxFloor].mu = spec_.mu_b;
+  w.set_wall_friction(kBoxFloor, WallFriction::Rough, spec_.mu_b);
   // Smooth, as the analytic and finite element solutions assume (thesis 3.2.3).
-  w.walls[kBackstop].friction = WallFriction::Smooth;
-  w.walls[kBackstop].vx = -spec_.speed;
-  w.walls[kBackstop].by = std::max(w.walls[kBackstop].by, 6.0 * spec_.h0 + 20.0);
+  const Wall backstop = w.wall(kBackstop);
+  w.set_wall_friction(kBackstop, WallFriction::Smooth, backstop.mu);
+  w.set_wall_velocity(kBackstop, -spec_.speed, backstop.vy);
+  w.set_wall_ends(kBackstop, backstop.ax, backstop.ay, backstop.bx, std::max(backstop.by, 6.0 * spec_.h0 + 20.0));
   initial_discs_ = static_cast<std::int64_t>(w.discs.size());
 }
 
@@ -45,7 +45,7 @@ bool SinglyVergentExperiment::advance(World& w) {
     std::vector<std::uint8_t> flags(d.size(), 0);
     bool any = false;
     for (std::size_t i = 0; i < d.size(); ++i) {
-      flags[i] = d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.walls[kBackstop].ax + 2.0;
+      flags[i] = d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.wall(kBackstop).ax + 2.0;
       any |= flags[i] != 0;
     }
     if (any) w.remove(flags, RemovalReason::LeftDomain);
@@ -56,7 +56,7 @@ bool SinglyVergentExperiment::advance(World& w) {
 SinglyVergentShape SinglyVergentExperiment::shape(const World& w) const {
   SinglyVergentShape g;
   const auto& d = w.discs;
-  g.backstop = w.walls[kBackstop].ax;
+  g.backstop = w.wall(kBackstop).ax;
   const Surface s = measure_surface(d, 0.0, g.backstop, spec_.column_width_factor * mean_radius(d));
   // The wedge: surface columns raised by a disc diameter, contiguous from the backstop (gaps of
   // up to kMaxGap columns are bridged); a detached pop-up further out is not part of it.
@@ -110,19 +110,13 @@ std::vector<SeriesColumn> SinglyVergentExperiment::columns() const {
 
 std::vector<double> SinglyVergentExperiment::measure(const World& w) const {
   const SinglyVergentShape g = shape(w);
-  double touching = 0, limit = 0;
-  const auto& wc = w.neighbors.walls;
-  for (std::size_t k = 0; k < wc.size(); ++k) {
-    if (wc.wall[k] != kBoxFloor || !wc.touching[k]) continue;
-    touching += 1;
-    limit += wc.at_limit[k];
-  }
+  const WallContactStats base = w.wall_contact_stats(w.wall_index(kBoxFloor));
   const double h0 = spec_.h0;
   auto or_nan = [&](double v) { return g.has_wedge ? v : kNaN; };
   return {static_cast<double>(w.step), w.time, shortening(w), g.backstop / h0, or_nan(g.front / h0),
           or_nan((g.backstop - g.front) / h0), or_nan(g.height / h0), or_nan(g.taper * kDegPerRad),
           or_nan(g.taper_front * kDegPerRad), or_nan(g.taper_back * kDegPerRad), or_nan(g.taper_mean * kDegPerRad),
-          touching > 0 ? limit / touching : 0.0, static_cast<double>(w.discs.size())};
+          base.slip_fraction(), static_cast<double>(w.discs.size())};
 }
 
 std::vector<std::pair<std::string, double>> SinglyVergentExperiment::scalars(const World& w) const {

@@ -14,14 +14,10 @@
 namespace orogen {
 namespace {
 
-constexpr int kHousekeepingEvery = 100;  // steps between window, pinning and stray checks
+constexpr int kHousekeepingEvery = 100;  // steps between window and stray checks
 
-enum WallIndex : std::size_t { kProBase = 0, kRetroBase = 1, kRetroEnd = 2 };
-
-void set_motion(World& w, std::size_t i, Motion m, double vx) {
-  w.discs.motion[i] = static_cast<std::uint8_t>(m);
-  if (m == Motion::Kinematic) { w.discs.vx[i] = vx; w.discs.vy[i] = 0; w.discs.omega[i] = 0; }
-}
+constexpr std::string_view kProBase = "pro_base", kRetroBase = "retro_base", kRetroEnd = "retro_end";
+constexpr std::string_view kPinHook = "wedge.pin_retro_base";
 
 }  // namespace
 
@@ -55,13 +51,13 @@ void WedgeExperiment::setup(World& w) {
 void WedgeExperiment::build_layer(World& w) {
   const double L = tile_.length;
   x_end_ = spec_.retro_length * spec_.h0;
-  Wall pro{.name = "pro_base", .ax = -1e7, .ay = 0, .bx = 0, .by = 0, .surface_speed = spec_.v, .mu = spec_.mu_bp};
+  Wall pro{.name = std::string(kProBase), .ax = -1e7, .ay = 0, .bx = 0, .by = 0, .surface_speed = spec_.v, .mu = spec_.mu_bp};
   pro.friction = spec_.basal == BasalCondition::Traction ? WallFriction::Traction : WallFriction::Rough;
   pro.traction_gamma = spec_.gamma_b;
-  Wall retro{.name = "retro_base", .ax = 0, .ay = 0, .bx = x_end_ + 1, .by = 0,
+  Wall retro{.name = std::string(kRetroBase), .ax = 0, .ay = 0, .bx = x_end_ + 1, .by = 0,
              .friction = WallFriction::Rough, .mu = spec_.mu_br};
-  Wall end{.name = "retro_end", .ax = x_end_, .ay = -1, .bx = x_end_, .by = 20 * spec_.h0};
-  w.walls = {pro, retro, end};
+  Wall end{.name = std::string(kRetroEnd), .ax = x_end_, .ay = -1, .bx = x_end_, .by = 20 * spec_.h0};
+  w.set_walls({pro, retro, end});
   // Until a wedge exists, the layer in front of the S-point stalls on its base and must be
   // long enough to break at the S-point rather than against the rigid kinematic slab.
   window_pro_ = -std::max(spec_.window, spec_.initial_active) * spec_.h0;
@@ -80,6 +76,12 @@ void WedgeExperiment::build_layer(World& w) {
   entered_ = static_cast<std::int64_t>(w.discs.size());
   t_start_ = w.time;
   update_windows(w);
+  attach(w);
+}
+
+void WedgeExperiment::attach(World& w) {
+  if (spec_.basal == BasalCondition::ConstantVelocity)
+    w.hooks.add(Stage::AfterForces, std::string(kPinHook), [this](World& world) { pin_retro_base(world); });
 }
 
 // Keeps kinematic slab beyond the pro window: stamps a new tile when less than
@@ -92,11 +94,11 @@ void WedgeExperiment::feed_slab(World& w) {
   slab_left_ -= tile_.length;
   const std::size_t first_cluster = w.clusters.size();
   const auto [first, last] = stamp_tile(w, tile_, slab_left_);
-  for (auto i = first; i < last; ++i) set_motion(w, i, Motion::Kinematic, spec_.v);
-  for (std::size_t k = first_cluster; k < w.clusters.size(); ++k) {
-    w.clusters.motion[k] = static_cast<std::uint8_t>(Motion::Kinematic);
-    w.clusters.vx[k] = spec_.v; w.clusters.vy[k] = 0; w.clusters.omega[k] = 0;
-  }
+  w.edit_motion([&](MotionEdit& e) {
+    for (auto i = first; i < last; ++i)
+      if (w.discs.cluster[i] < 0) e.disc(i, Motion::Kinematic, spec_.v);
+    for (std::size_t k = first_cluster; k < w.clusters.size(); ++k) e.cluster(k, Motion::Kinematic, spec_.v);
+  });
   entered_ += static_cast<std::int64_t>(last - first);
 }
 
@@ -120,42 +122,36 @@ void WedgeExperiment::update_windows(World& w) {
     if (x < window_pro_) { vx = spec_.v; return Motion::Kinematic; }
     return Motion::Dynamic;
   };
-  bool changed = false;
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    if (d.cluster[i] >= 0) continue;
-    double vx;
-    const Motion m = wanted(d.x[i], pinned_[static_cast<std::size_t>(d.id[i])], vx);
-    if (static_cast<std::uint8_t>(m) == d.motion[i] && (m == Motion::Dynamic || d.vx[i] == vx)) continue;
-    set_motion(w, i, m, vx);
-    changed = true;
-  }
-  auto& c = w.clusters;
-  for (std::size_t k = 0; k < c.size(); ++k) {
-    bool pinned = false;
-    for (auto i : c.members[k]) if (i >= 0 && pinned_[static_cast<std::size_t>(d.id[i])]) pinned = true;
-    double vx;
-    const Motion m = wanted(c.x[k], pinned, vx);
-    if (static_cast<std::uint8_t>(m) == c.motion[k] && (m == Motion::Dynamic || c.vx[k] == vx)) continue;
-    c.motion[k] = static_cast<std::uint8_t>(m);
-    if (m == Motion::Kinematic) { c.vx[k] = vx; c.vy[k] = 0; c.omega[k] = 0; }
-    for (auto i : c.members[k]) if (i >= 0) d.motion[static_cast<std::size_t>(i)] = c.motion[k];
-    changed = true;
-  }
-  if (changed) {
-    update_cluster_discs(c, d);
-    w.invalidate_neighbors();
-  }
+  const auto& c = w.clusters;
+  w.edit_motion([&](MotionEdit& e) {
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      if (d.cluster[i] >= 0) continue;
+      double vx;
+      const Motion m = wanted(d.x[i], pinned_[static_cast<std::size_t>(d.id[i])], vx);
+      e.disc(i, m, vx);
+    }
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      bool pinned = false;
+      for (auto i : c.members[k]) if (i >= 0 && pinned_[static_cast<std::size_t>(d.id[i])]) pinned = true;
+      double vx;
+      const Motion m = wanted(c.x[k], pinned, vx);
+      e.cluster(k, m, vx);
+    }
+  });
 }
 
-// Constant-velocity condition: discs touching the retro-side base are held at rest (no slip).
+// Constant-velocity condition: a disc that touches the retro-side base is held at rest (no
+// slip) from the step it first touches: a hook after the forces of every step, so it does not
+// move in that step's integration (docs/model.md, "Constant velocity").
 void WedgeExperiment::pin_retro_base(World& w) {
-  const auto& wc = w.neighbors.walls;
-  const auto& ids = w.neighbors.wall_disc_id;
   if (pinned_.size() < static_cast<std::size_t>(w.next_disc_id)) pinned_.resize(static_cast<std::size_t>(w.next_disc_id), 0);
-  // By the stable id recorded with the contact: erosion or stray removal in this step may have
-  // compacted the disc arrays since the list was built.
-  for (std::size_t k = 0; k < wc.size(); ++k)
-    if (wc.wall[k] == kRetroBase && wc.touching[k]) pinned_[static_cast<std::size_t>(ids[k])] = 1;
+  const std::size_t retro = w.wall_index(kRetroBase);
+  w.edit_motion([&](MotionEdit& e) {
+    w.for_each_touching(retro, [&](std::size_t i) {
+      pinned_[static_cast<std::size_t>(w.discs.id[i])] = 1;
+      e.body_of(i, Motion::Kinematic);
+    });
+  });
 }
 
 // Erosion (thesis 6.3): every disc, or whole cluster by its mean elevation, above the
@@ -181,7 +177,6 @@ bool WedgeExperiment::advance(World& w) {
   feed_slab(w);
   if (spec_.erosion_height > 0 && w.step % static_cast<std::uint64_t>(spec_.erosion_every) == 0) erode(w);
   if (w.step % kHousekeepingEvery == 0) {
-    if (spec_.basal == BasalCondition::ConstantVelocity) pin_retro_base(w);
     remove_strays(w);
     update_windows(w);
   }
@@ -224,13 +219,8 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
   const Surface s = surface(w);
   WedgeGeometryInput in{w.discs.x, w.discs.y, w.discs.radius, spec_.h0, spec_.packing.d_max, spec_.marker_height, 0.0};
   const WedgeGeometry g = measure_wedge(in, s);
-  double touching[2] = {0, 0}, limit[2] = {0, 0};
-  const auto& wc = w.neighbors.walls;
-  for (std::size_t k = 0; k < wc.size(); ++k) {
-    if (wc.wall[k] > kRetroBase || !wc.touching[k]) continue;
-    touching[wc.wall[k]] += 1;
-    limit[wc.wall[k]] += wc.at_limit[k];
-  }
+  const WallContactStats pro = w.wall_contact_stats(w.wall_index(kProBase));
+  const WallContactStats retro = w.wall_contact_stats(w.wall_index(kRetroBase));
   std::size_t active = 0, eroded = 0, left = 0;
   for (std::size_t i = 0; i < w.discs.size(); ++i) active += w.discs.is_dynamic(i);
   for (const auto& r : w.removals) {
@@ -240,7 +230,7 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
   const double h0 = spec_.h0;
   return {static_cast<double>(w.step), w.time, convergence(w), g.h / h0, g.dp / h0, g.mp / h0, g.dr / h0, g.mr / h0,
           g.x_peak / h0, g.alpha * kDegPerRad, g.beta * kDegPerRad, g.alpha_fit * kDegPerRad, g.beta_fit * kDegPerRad,
-          touching[0] > 0 ? limit[0] / touching[0] : 0.0, touching[1] > 0 ? limit[1] / touching[1] : 0.0,
+          pro.slip_fraction(), retro.slip_fraction(),
           static_cast<double>(active), static_cast<double>(w.discs.size()), static_cast<double>(eroded),
           static_cast<double>(left), static_cast<double>(entered_), window_pro_ / h0, window_retro_ / h0};
 }
@@ -289,10 +279,8 @@ void WedgeExperiment::load(const ArchiveReader& in) {
 }
 
 void WedgeExperiment::adopt_branch_config(World& w) const {
-  for (Wall& wall : w.walls) {
-    if (wall.name == "pro_base") wall.mu = spec_.mu_bp;
-    if (wall.name == "retro_base") wall.mu = spec_.mu_br;
-  }
+  w.set_wall_friction(kProBase, w.wall(kProBase).friction, spec_.mu_bp);
+  w.set_wall_friction(kRetroBase, w.wall(kRetroBase).friction, spec_.mu_br);
 }
 
 std::string WedgeExperiment::status(const World& w) const {

@@ -44,6 +44,7 @@ class WedgeExperiment final : public Experiment {
   explicit WedgeExperiment(WedgeSpec spec) : spec_(std::move(spec)) {}
 
   void setup(World& world) override;
+  void attach(World& world) override;
   bool advance(World& world) override;
   std::vector<SeriesColumn> columns() const override;
   std::vector<double> measure(const World& world) const override;
@@ -92,7 +93,7 @@ class WedgeExperiment final : public Experiment {
   double window_retro_ = 0;  // discs right of this are kinematic at rest (the end wall: none)
   double x_end_ = 0;         // right end wall of the retro-side layer
   std::int64_t entered_ = 0; // discs ever added to the model
-  std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base
+  std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base (pin_retro_base)
   DisplacementTracker displacements_;  // for the per-output displacement fields
   WedgeHistory history_;               // the shape at each output, for summary.csv
 };

@@ -31,13 +31,13 @@ namespace {
 
 void add_box(World& w, const PackingSpec& s) {
   const double top = 4.0 * s.thickness + 20.0;
-  Wall floor{.name = "floor", .ax = -1.0, .ay = 0.0, .bx = s.length + 1.0, .by = 0.0,
+  Wall floor{.name = std::string(kBoxFloor), .ax = -1.0, .ay = 0.0, .bx = s.length + 1.0, .by = 0.0,
              .friction = WallFriction::Rough, .mu = s.mu_wall};
-  Wall left{.name = "left", .ax = 0.0, .ay = -1.0, .bx = 0.0, .by = top};
-  Wall right{.name = "right", .ax = s.length, .ay = -1.0, .bx = s.length, .by = top};
-  w.walls.push_back(floor);
-  w.walls.push_back(left);
-  w.walls.push_back(right);
+  Wall left{.name = std::string(kBoxLeft), .ax = 0.0, .ay = -1.0, .bx = 0.0, .by = top};
+  Wall right{.name = std::string(kBoxRight), .ax = s.length, .ay = -1.0, .bx = s.length, .by = top};
+  std::vector<Wall> walls = w.walls;
+  walls.insert(walls.end(), {floor, left, right});
+  w.set_walls(std::move(walls));
 }
 
 // Regular hexagonal rows of unit discs, touching without overlap.

@@ -24,8 +24,8 @@ struct PackingSpec {
   double overfill = 1.06;  // material placed relative to the target, trimmed after settling
 };
 
-// Indices in World::walls of the box that place_packing adds first.
-enum BoxWall : std::size_t { kBoxFloor = 0, kBoxLeft = 1, kBoxRight = 2 };
+// Names of the walls of the box that place_packing adds (World::wall and the other wall methods).
+inline constexpr std::string_view kBoxFloor = "floor", kBoxLeft = "left", kBoxRight = "right";
 
 // Adds the box (rough floor at y = 0, smooth side walls at x = 0 and x = length) and places
 // the particles above the floor without overlap. Enough material is placed to settle to

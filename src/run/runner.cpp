@@ -111,6 +111,7 @@ class Run {
     state_.finished = false;
     load_world(in, world_);
     exp_->load(in);
+    exp_->attach(world_);  // hooks are not state: they come back with the experiment
     state_.outputs = in.get_scalar<std::int64_t>("run.outputs");
     in.get("run.output_times", state_.output_times);
     last_output_step_ = in.get_scalar<std::uint64_t>("run.last_output_step");
@@ -227,6 +228,7 @@ class Run {
     apply_engine_config(config_, world_);
     load_world(in, world_);
     exp_->load(in);
+    exp_->attach(world_);  // hooks are not state: they come back with the experiment
     exp_->adopt_branch_config(world_);
     const Discs& d = world_.discs;
     bool same = d.size() == snap.size();

@@ -9,7 +9,7 @@
 namespace orogen {
 
 // Holds the flagged discs (by index) at rest; a flagged cluster disc holds its whole cluster.
-// Returns the number of discs held.
+// Returns the number of discs held at rest in the world afterwards.
 std::size_t hold_at_rest(World& world, std::span<const std::uint8_t> flags);
 
 }  // namespace orogen

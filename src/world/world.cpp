@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numbers>
 
@@ -71,6 +72,7 @@ void World::advance() {
     check_build(build_neighbor_list(neighbors, discs, clusters, walls, law, dt, sort), *this);
   }
   step_stages();
+  hooks.run(Stage::AfterIntegration, *this);
   for (auto& w : walls) {
     w.ax += w.vx * dt; w.bx += w.vx * dt;
     w.ay += w.vy * dt; w.by += w.vy * dt;
@@ -86,6 +88,10 @@ void World::step_stages(const ThreadSplit* given) {
   ThreadSplit cut;
   double max2 = 0;
   std::int64_t not_finite = 0;
+  // Hooks after the forces run on one thread between the force stages and integration; with
+  // none, the team does not wait there for it.
+  const bool after_forces = !hooks.empty(Stage::AfterForces);
+  std::exception_ptr hook_error;
   // One thread team for all three stages (a team per stage cost a fork and a join each), each
   // thread on its own stretch of the domain.
 #pragma omp parallel num_threads(threads) reduction(max : max2) reduction(+ : not_finite) if (threads > 1)
@@ -103,11 +109,22 @@ void World::step_stages(const ThreadSplit* given) {
     // A body's members may lie in the next thread's stretch: their forces must be whole before
     // it gathers them, and their wall contacts read before it moves them.
 #pragma omp barrier
+    if (after_forces) {
+#pragma omp single
+      {
+        try {
+          hooks.run(Stage::AfterForces, *this);
+        } catch (...) {
+          hook_error = std::current_exception();  // an exception may not leave the team
+        }
+      }
+    }
     const Displacement r =
         integrate_share(discs, clusters, forces, body, dt, neighbors.x_ref.data(), neighbors.y_ref.data(), split, t);
     max2 = r.max2;
     not_finite = r.not_finite;
   }
+  if (hook_error) std::rethrow_exception(hook_error);
   moved = Displacement{max2, not_finite}.distance();
 }
 

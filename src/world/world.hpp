@@ -5,12 +5,15 @@
 //   3. wall contact forces             (boundary/wall_forces)
 //   4. body forces and integration     (integrate/integrator)
 //   5. move walls, advance the clock
-// Experiments add their own stages (boundary conditions, erosion, inflow, measurements)
-// around World::advance() without reaching into it.
+// Experiments add their own stages (erosion, inflow, measurements) around World::advance(),
+// and named hooks inside it (after the forces, after integration: world/stage_hooks.hpp).
+// The members are open for reading; changes go through the methods of the second part, which
+// update what depends on what they change (the neighbour list, the member discs of clusters).
 #include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "boundary/wall.hpp"
@@ -20,6 +23,8 @@
 #include "integrate/integrator.hpp"
 #include "particles/clusters.hpp"
 #include "particles/discs.hpp"
+#include "world/motion_edit.hpp"
+#include "world/stage_hooks.hpp"
 
 namespace orogen {
 
@@ -36,6 +41,13 @@ struct RemovalRecord {
   std::int64_t id = 0, cluster_id = -1;
   double x = 0, y = 0;
   RemovalReason reason = RemovalReason::Other;
+};
+
+// Touching contacts of one wall in the last force pass, and how many of them slid (at the
+// Coulomb limit).
+struct WallContactStats {
+  std::size_t touching = 0, at_limit = 0;
+  double slip_fraction() const { return touching ? static_cast<double>(at_limit) / static_cast<double>(touching) : 0.0; }
 };
 
 // Largest stable time step for normal stiffness kn and the smallest effective pair mass:
@@ -57,8 +69,9 @@ struct World {
   int sort_every = 10;  // re-order discs in cell order every this many list builds
   std::int64_t next_disc_id = 0, next_cluster_id = 0;
   std::vector<RemovalRecord> removals;
+  StageHooks hooks;  // run inside advance(); not state (see stage_hooks.hpp)
 
-  // One time step (stages listed above).
+  // One time step (stages listed above, hooks included).
   void advance();
 
   // Stages 2-4 of a step (pair forces, wall forces, integration) in one thread team, each
@@ -82,8 +95,52 @@ struct World {
   // Makes the given discs one rigid cluster.
   std::size_t add_cluster(std::span<const std::size_t> disc_indices);
 
-  // Marks that the neighbour list must be rebuilt (after motion flags changed, say).
+  // Marks that the neighbour list must be rebuilt. The methods below call it where they must;
+  // a caller needs it only after changing the members directly.
   void invalidate_neighbors() { neighbors.valid = false; }
+
+  // --- Changes that keep the world consistent (world_changes.cpp) ---
+
+  // Coulomb coefficient of disc-disc contacts: every force pass reads it, nothing holds a copy.
+  void set_friction(double mu) { law.mu = mu; }
+  double friction() const { return law.mu; }
+  // The whole law: the list holds each contact's dashpot, set from the law at its build.
+  void set_contact_law(const ContactLaw& l);
+
+  // Replaces the walls (wall contacts are listed by wall index: the list is rebuilt).
+  void set_walls(std::vector<Wall> w);
+  // Index of the wall of this name; std::invalid_argument naming it and the walls there.
+  std::size_t wall_index(std::string_view name) const;
+  const Wall& wall(std::string_view name) const { return walls[wall_index(name)]; }
+  void set_wall_velocity(std::string_view name, double vx, double vy);
+  // Smooth, rough or traction, and its Coulomb coefficient (read at every force pass).
+  void set_wall_friction(std::string_view name, WallFriction friction, double mu);
+  // New end points: the list follows by its own test (wall_displacement), as for a moving wall.
+  void set_wall_ends(std::string_view name, double ax, double ay, double bx, double by);
+  // A disabled wall has no contacts: the list is rebuilt.
+  void enable_wall(std::string_view name, bool enabled);
+
+  // Changes motion flags through `edit(MotionEdit&)`; if any changed, places member discs on
+  // their bodies and marks the list for a rebuild (wall contacts are listed for dynamic discs).
+  template <class F>
+  void edit_motion(F&& edit) {
+    MotionEdit e(discs, clusters);
+    edit(e);
+    if (!e.changed()) return;
+    update_cluster_discs(clusters, discs);
+    invalidate_neighbors();
+  }
+
+  // --- Wall contacts of the last force pass (world_changes.cpp) ---
+  WallContactStats wall_contact_stats(std::size_t wall) const;
+  // Calls f(disc index) for each disc that touched wall `wall` in the last force pass, in list
+  // order. Disc indices are those of the pass: call it before discs are removed or added.
+  template <class F>
+  void for_each_touching(std::size_t wall, F&& f) const {
+    const auto& wc = neighbors.walls;
+    for (std::size_t k = 0; k < wc.size(); ++k)
+      if (wc.wall[k] == wall && wc.touching[k]) f(static_cast<std::size_t>(wc.disc[k]));
+  }
 
   // Smallest effective mass of a contact pair, for the stability limit.
   double min_pair_mass() const;

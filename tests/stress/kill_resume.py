@@ -43,6 +43,11 @@ CASES = {
     "wedge": ["--set", "wedge.s_end=0.12", "--set", "wedge.outputs=12", "--set", "output.checkpoint_every=2",
               "--set", "layer.length=60", "--set", "layer.thickness=6", "--set", "output.contacts=true",
               "--set", "output.stress=true", "--set", "output.stress_grid=2"],
+    # Constant velocity: its pinning hook (after the forces of every step) is added again on
+    # resume, and the pinned discs cross the checkpoint.
+    "wedge_constant_velocity": ["--set", "wedge.basal=constant_velocity", "--set", "wedge.s_end=0.12",
+                                "--set", "wedge.outputs=12", "--set", "output.checkpoint_every=1",
+                                "--set", "layer.length=60", "--set", "layer.thickness=6"],
 }
 
 IGNORED = {"run.log", "run.lock"}

@@ -1,0 +1,45 @@
+#pragma once
+// Named hooks an experiment runs inside a time step (World::advance), at fixed stages:
+//   AfterForces       every pair and wall force of the step is summed (the wall contacts'
+//                     touching flags are this step's), before any disc moves
+//   AfterIntegration  the discs have moved, before the walls move and the clock advances
+// Hooks run in the order they were added, on one thread, once per step; world.step and
+// world.time are still those of the step's start. A hook is not state: an experiment adds its
+// hooks again after a checkpoint is loaded (Experiment::attach), and whatever a hook depends
+// on must be in the world or the experiment's checkpoint.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace orogen {
+
+struct World;
+
+enum class Stage : std::uint8_t { AfterForces = 0, AfterIntegration = 1 };
+inline constexpr std::size_t kStageCount = 2;
+
+class StageHooks {
+ public:
+  using Hook = std::function<void(World&)>;
+
+  // Adds `hook` at the end of `stage`'s list; a hook of the same name (at any stage) is
+  // replaced, so that attaching an experiment twice runs its hooks once.
+  void add(Stage stage, std::string name, Hook hook);
+  void remove(std::string_view name);
+  bool empty(Stage stage) const { return lists_[index(stage)].empty(); }
+  std::vector<std::string> names(Stage stage) const;
+  void run(Stage stage, World& world) const;
+
+ private:
+  struct Named {
+    std::string name;
+    Hook hook;
+  };
+  static std::size_t index(Stage s) { return static_cast<std::size_t>(s); }
+  std::array<std::vector<Named>, kStageCount> lists_;
+};
+
+}  // namespace orogen

@@ -1,0 +1,65 @@
+// The World's methods that change it and keep what depends on the change consistent, and its
+// read access to the wall contacts (world.hpp, second part).
+#include <fmt/format.h>
+
+#include "world/world.hpp"
+
+namespace orogen {
+
+void World::set_contact_law(const ContactLaw& l) {
+  law = l;
+  invalidate_neighbors();
+}
+
+void World::set_walls(std::vector<Wall> w) {
+  walls = std::move(w);
+  invalidate_neighbors();
+}
+
+std::size_t World::wall_index(std::string_view name) const {
+  std::string there;
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    if (walls[k].name == name) return k;
+    if (!there.empty()) there += ", ";
+    there += walls[k].name;
+  }
+  throw std::invalid_argument(
+      fmt::format("no wall named '{}' in this world (walls: {})", name, there.empty() ? "none" : there));
+}
+
+void World::set_wall_velocity(std::string_view name, double vx, double vy) {
+  Wall& w = walls[wall_index(name)];
+  w.vx = vx;
+  w.vy = vy;
+}
+
+void World::set_wall_friction(std::string_view name, WallFriction friction, double mu) {
+  Wall& w = walls[wall_index(name)];
+  w.friction = friction;
+  w.mu = mu;
+}
+
+void World::set_wall_ends(std::string_view name, double ax, double ay, double bx, double by) {
+  Wall& w = walls[wall_index(name)];
+  w.ax = ax; w.ay = ay; w.bx = bx; w.by = by;
+}
+
+void World::enable_wall(std::string_view name, bool enabled) {
+  Wall& w = walls[wall_index(name)];
+  if (w.enabled == enabled) return;
+  w.enabled = enabled;
+  invalidate_neighbors();
+}
+
+WallContactStats World::wall_contact_stats(std::size_t wall) const {
+  WallContactStats s;
+  const auto& wc = neighbors.walls;
+  for (std::size_t k = 0; k < wc.size(); ++k) {
+    if (wc.wall[k] != wall || !wc.touching[k]) continue;
+    ++s.touching;
+    s.at_limit += wc.at_limit[k];
+  }
+  return s;
+}
+
+}  // namespace orogen
