@@ -115,7 +115,8 @@ void WedgeExperiment::update_windows(World& w) {
   }
   window_pro_ = std::min(window_pro_, dp - spec_.window * spec_.h0);
   window_retro_ = std::min(x_end_ + 1.0, std::max(window_retro_, dr + spec_.window * spec_.h0));
-  if (pinned_.size() < static_cast<std::size_t>(w.next_disc_id)) pinned_.resize(static_cast<std::size_t>(w.next_disc_id), 0);
+  const auto ids = static_cast<std::size_t>(w.next_disc_id);
+  if (pinned_.size() < ids) pinned_.resize(ids, 0);
   auto wanted = [&](double x, bool pinned, double& vx) {
     vx = 0;
     if (pinned || x > window_retro_) return Motion::Kinematic;
@@ -144,7 +145,8 @@ void WedgeExperiment::update_windows(World& w) {
 // slip) from the step it first touches: a hook after the forces of every step, so it does not
 // move in that step's integration (docs/model.md, "Constant velocity").
 void WedgeExperiment::pin_retro_base(World& w) {
-  if (pinned_.size() < static_cast<std::size_t>(w.next_disc_id)) pinned_.resize(static_cast<std::size_t>(w.next_disc_id), 0);
+  const auto ids = static_cast<std::size_t>(w.next_disc_id);
+  if (pinned_.size() < ids) pinned_.resize(ids, 0);
   const std::size_t retro = w.wall_index(kRetroBase);
   w.edit_motion([&](MotionEdit& e) {
     w.for_each_touching(retro, [&](std::size_t i) {
