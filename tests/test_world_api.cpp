@@ -79,13 +79,13 @@ TEST(WorldApi, ChangedContactLawRebuildsTheDashpots) {
   World w = sliding_pair();
   w.advance();
   ASSERT_TRUE(w.neighbors.valid);
-  const double gamma = w.neighbors.gamma_n.at(0);
+  const double gamma = w.contacts.pairs.gamma_n.at(0);
   ContactLaw stiffer = w.law;
   stiffer.kn *= 4;
   w.set_contact_law(stiffer);
   EXPECT_FALSE(w.neighbors.valid);
   w.advance();
-  EXPECT_GT(w.neighbors.gamma_n.at(0), 1.5 * gamma);  // 2 zeta sqrt(k_n m_eff): about twice at 4 k_n
+  EXPECT_GT(w.contacts.pairs.gamma_n.at(0), 1.5 * gamma);  // 2 zeta sqrt(k_n m_eff): about twice at 4 k_n
 }
 
 TEST(WorldApi, MotionEditsUpdateClustersAndTheList) {
