@@ -152,7 +152,7 @@ struct World {
   template <class F>
   void for_each_wall_contact(F&& f) const { orogen::for_each_wall_contact(contacts, f); }
 
-  // Smallest effective mass of a contact pair, for the stability limit.
+  // Smallest effective mass of a contact pair, for the stability limit (infinite without discs).
   double min_pair_mass() const;
   // Largest stable time step for the current stiffness and masses (MODEL §3, §2.7).
   double stable_dt() const;
