@@ -59,12 +59,12 @@ std::size_t world_bytes(World& w) {
   std::size_t b = 0;
   w.discs.for_each_array([&](std::string_view, auto& v) { b += bytes_of(v); });
   const auto& L = w.neighbors;
-  b += bytes_of(L.first) + bytes_of(L.second) + bytes_of(L.xi) + bytes_of(L.gamma_n) + bytes_of(L.id_first) +
-       bytes_of(L.id_second) + bytes_of(L.chunk_start) + bytes_of(L.wall_disc_id) + bytes_of(L.x_ref) +
-       bytes_of(L.y_ref);
-  const auto& wc = L.walls;
-  b += bytes_of(wc.wall) + bytes_of(wc.disc) + bytes_of(wc.xi) + bytes_of(wc.gamma_n) + bytes_of(wc.touching) +
-       bytes_of(wc.at_limit) + bytes_of(wc.mass);
+  const auto& P = w.contacts.pairs;
+  b += bytes_of(L.first) + bytes_of(L.second) + bytes_of(P.xi) + bytes_of(P.gamma_n) + bytes_of(P.id_first) +
+       bytes_of(P.id_second) + bytes_of(L.chunk_start) + bytes_of(L.x_ref) + bytes_of(L.y_ref);
+  const auto& wc = w.contacts.walls;
+  b += bytes_of(wc.wall) + bytes_of(wc.disc) + bytes_of(wc.disc_id) + bytes_of(wc.xi) + bytes_of(wc.gamma_n) +
+       bytes_of(wc.touching) + bytes_of(wc.at_limit) + bytes_of(wc.mass);
   const auto& s = w.scratch;
   b += bytes_of(s.forces);
   return b;
@@ -167,9 +167,10 @@ void save_state(World& w, const Params& p, const std::string& path) {
   put1(o, p.seed);
   w.discs.for_each_array([&](std::string_view, auto& v) { put(o, v); });
   for (const auto& s : w.walls) { put1(o, s.ax); put1(o, s.ay); put1(o, s.bx); put1(o, s.by); }
-  const auto& L = w.neighbors;
-  put(o, L.id_first); put(o, L.id_second); put(o, L.xi);
-  put(o, L.wall_disc_id); put(o, L.walls.wall); put(o, L.walls.xi);
+  const auto& P = w.contacts.pairs;
+  const auto& wc = w.contacts.walls;
+  put(o, P.id_first); put(o, P.id_second); put(o, P.xi);
+  put(o, wc.disc_id); put(o, wc.wall); put(o, wc.xi);
   put1(o, w.next_disc_id);
   if (!o) throw std::runtime_error("short write to " + path);
 }
@@ -191,12 +192,13 @@ void load_state(World& w, const Params& p, const std::string& path) {
   set_law(w, p);
   make_walls(w, W, 0.0, p.mu);
   for (auto& s : w.walls) { get1(in, s.ax); get1(in, s.ay); get1(in, s.bx); get1(in, s.by); }
-  auto& L = w.neighbors;
-  get(in, L.id_first); get(in, L.id_second); get(in, L.xi);
-  get(in, L.wall_disc_id); get(in, L.walls.wall); get(in, L.walls.xi);
+  auto& P = w.contacts.pairs;
+  auto& wc = w.contacts.walls;
+  get(in, P.id_first); get(in, P.id_second); get(in, P.xi);
+  get(in, wc.disc_id); get(in, wc.wall); get(in, wc.xi);
   get1(in, w.next_disc_id);
   if (!in) throw std::runtime_error("truncated state file " + path);
-  L.valid = false;
+  w.neighbors.valid = false;
 }
 
 // ---------------------------------------------------------------- measurements
@@ -245,7 +247,7 @@ Result run_stage(const World& settled, const std::string& mode, int threads, std
   if (mode == "push") w.set_wall_velocity("left", vpush, 0.0);
   // Build the list outside the timed part, as LAMMPS's setup does before "Loop time".
   if (!w.neighbors.valid) {
-    build_neighbor_list(w.neighbors, w.discs, w.clusters, w.walls, w.law, w.dt, true);
+    w.rebuild_contacts(true);
     w.moved = 0;
   }
   const std::uint64_t builds0 = w.neighbors.builds;

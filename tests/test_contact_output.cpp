@@ -73,8 +73,8 @@ TEST(ContactOutput, TakingItLeavesTheTrajectoryBitwiseTheSame) {
     EXPECT_EQ(with.discs.vx[i], without.discs.vx[i]) << i;
     EXPECT_EQ(with.discs.omega[i], without.discs.omega[i]) << i;
   }
-  EXPECT_EQ(with.neighbors.xi, without.neighbors.xi);
-  EXPECT_EQ(with.neighbors.walls.xi, without.neighbors.walls.xi);
+  EXPECT_EQ(with.contacts.pairs.xi, without.contacts.pairs.xi);
+  EXPECT_EQ(with.contacts.walls.xi, without.contacts.walls.xi);
 }
 
 // Also with a list the next step must rebuild first (measured on a rebuilt copy).

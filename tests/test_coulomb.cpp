@@ -72,7 +72,7 @@ struct TwoDiscs {
     w.discs.motion[0] = static_cast<std::uint8_t>(Motion::Kinematic);  // driven
     w.dt = 0.5 * w.stable_dt();
   }
-  double history() const { return w.neighbors.size() ? w.neighbors.xi[0] : 0.0; }
+  double history() const { return w.neighbors.size() ? w.contacts.pairs.xi[0] : 0.0; }
   std::size_t driven() const { return w.discs.id[0] == 0 ? 0 : 1; }
   // Slides the driven disc along the tangent so that the spring stretches.
   void shear(int steps) {
@@ -89,7 +89,7 @@ TEST(Coulomb, HistoryIsKeptAcrossListRebuilds) {
   ASSERT_NE(before, 0.0);
   const auto builds = t.w.neighbors.builds;
   // Rebuild with spatial re-ordering: the pair gets new indices, the spring its old stretch.
-  build_neighbor_list(t.w.neighbors, t.w.discs, t.w.clusters, t.w.walls, t.w.law, t.w.dt, true);
+  t.w.rebuild_contacts(true);
   EXPECT_EQ(t.w.neighbors.builds, builds + 1);
   EXPECT_EQ(t.history(), before);
 }

@@ -132,7 +132,7 @@ TEST(OneContactLaw, ForceStagesAndContactOutputGiveTheSameBits) {
       w.advance();
       if (s % 150 != 0) continue;
       // A current list, so that the output and the next step's stages see the same contacts.
-      build_neighbor_list(w.neighbors, w.discs, w.clusters, w.walls, w.law, w.dt, false);
+      w.rebuild_contacts(false);
       w.moved = 0;
       const ContactList c = measure_contact_forces(w);
       World next = w;
@@ -152,7 +152,7 @@ TEST(OneContactLaw, ForceStagesAndContactOutputGiveTheSameBits) {
         ++r;
       }
       pairs += r;
-      const auto& wc = next.neighbors.walls;
+      const auto& wc = next.contacts.walls;
       for (std::size_t k = 0; k < wc.size(); ++k) {
         if (!wc.touching[k]) continue;
         ASSERT_LT(r, c.size());
@@ -176,7 +176,7 @@ TEST(OneContactLaw, ForceStagesAndContactOutputGiveTheSameBits) {
 TEST(OneContactLaw, BiaxialElasticWallForceIsTheNormalForceWithoutDashpot) {
   World w = box(0);
   for (int s = 0; s < 2000; ++s) w.advance();
-  build_neighbor_list(w.neighbors, w.discs, w.clusters, w.walls, w.law, w.dt, false);
+  w.rebuild_contacts(false);
   w.moved = 0;
   // At rest and with walls at rest the dashpots give nothing: the output's normal force is
   // the elastic one.

@@ -40,7 +40,7 @@ std::vector<double> forces_with(World w, bool dense) {
   w.step_stages();
   std::vector<double> out;
   for (const auto& f : w.scratch.forces) out.insert(out.end(), {f.fx, f.fy, f.torque});
-  out.insert(out.end(), w.neighbors.xi.begin(), w.neighbors.xi.end());
+  out.insert(out.end(), w.contacts.pairs.xi.begin(), w.contacts.pairs.xi.end());
   for (const auto* a : {&w.discs.x, &w.discs.y, &w.discs.vx, &w.discs.vy, &w.discs.omega})
     out.insert(out.end(), a->begin(), a->end());
   return out;
@@ -82,7 +82,7 @@ TEST(PairKernels, AChunkIsDenseWhenMostOfItsPairsTouch) {
   for (const double skin : {0.05, 0.6}) {
     World w = falling_heap(skin);
     for (int s = 0; s < 4000; ++s) w.advance();
-    build_neighbor_list(w.neighbors, w.discs, w.clusters, w.walls, w.law, w.dt, false);
+    w.rebuild_contacts(false);
     const auto& L = w.neighbors;
     ASSERT_EQ(L.chunk_dense.size() + 1, L.chunk_start.size());
     for (std::size_t k = 0; k + 1 < L.chunk_start.size(); ++k) {

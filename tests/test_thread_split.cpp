@@ -50,8 +50,8 @@ std::vector<double> step_with(World w, const ThreadSplit& split) {
   for (const auto* a : {&w.discs.x, &w.discs.y, &w.discs.vx, &w.discs.vy, &w.discs.omega, &w.discs.theta})
     state.insert(state.end(), a->begin(), a->end());
   for (const auto& f : w.scratch.forces) state.insert(state.end(), {f.fx, f.fy, f.torque});
-  state.insert(state.end(), w.neighbors.xi.begin(), w.neighbors.xi.end());
-  state.insert(state.end(), w.neighbors.walls.xi.begin(), w.neighbors.walls.xi.end());
+  state.insert(state.end(), w.contacts.pairs.xi.begin(), w.contacts.pairs.xi.end());
+  state.insert(state.end(), w.contacts.walls.xi.begin(), w.contacts.walls.xi.end());
   return state;
 }
 

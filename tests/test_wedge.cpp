@@ -257,7 +257,7 @@ TEST(Wedge, MassIsConservedWithInflowAndErosion) {
 // Mean x velocity, in units of v, of dynamic discs touching the pro-side base between x_lo and
 // x_hi (from the wall contacts of the last force pass).
 double basal_speed(const World& w, double x_lo, double x_hi, int& count) {
-  const auto& wc = w.neighbors.walls;
+  const auto& wc = w.contacts.walls;
   double sum = 0;
   count = 0;
   for (std::size_t k = 0; k < wc.size(); ++k) {

@@ -62,6 +62,27 @@ TEST(StageHooks, AnErrorInAHookLeavesTheStep) {
   EXPECT_THROW(w.advance(), std::runtime_error);
 }
 
+// A copy stepped with the original's hooks would change the state of the original's
+// experiment (what the hooks capture): a copy starts without them; a move keeps them.
+TEST(StageHooks, ACopyOfAWorldHasNoHooksAMoveKeepsThem) {
+  World w;
+  w.add_disc(0, 5, 0.5);
+  int calls = 0;
+  w.hooks.add(Stage::AfterForces, "count", [&](World&) { ++calls; });
+  World copy = w;
+  EXPECT_TRUE(copy.hooks.empty(Stage::AfterForces));
+  copy.advance();
+  EXPECT_EQ(calls, 0);
+  World assigned;
+  assigned = w;
+  EXPECT_TRUE(assigned.hooks.empty(Stage::AfterForces));
+  w.advance();
+  EXPECT_EQ(calls, 1);
+  World moved = std::move(w);
+  moved.advance();
+  EXPECT_EQ(calls, 2);
+}
+
 TEST(WorldApi, ChangedFrictionIsSeenByTheNextForcePass) {
   World w = sliding_pair();
   double fx = -1;
@@ -79,13 +100,13 @@ TEST(WorldApi, ChangedContactLawRebuildsTheDashpots) {
   World w = sliding_pair();
   w.advance();
   ASSERT_TRUE(w.neighbors.valid);
-  const double gamma = w.neighbors.gamma_n.at(0);
+  const double gamma = w.contacts.pairs.gamma_n.at(0);
   ContactLaw stiffer = w.law;
   stiffer.kn *= 4;
   w.set_contact_law(stiffer);
   EXPECT_FALSE(w.neighbors.valid);
   w.advance();
-  EXPECT_GT(w.neighbors.gamma_n.at(0), 1.5 * gamma);  // 2 zeta sqrt(k_n m_eff): about twice at 4 k_n
+  EXPECT_GT(w.contacts.pairs.gamma_n.at(0), 1.5 * gamma);  // 2 zeta sqrt(k_n m_eff): about twice at 4 k_n
 }
 
 TEST(WorldApi, MotionEditsUpdateClustersAndTheList) {

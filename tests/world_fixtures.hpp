@@ -24,10 +24,10 @@ inline double spring_energy(const World& w) {
     const double delta = d.radius[i] + d.radius[j] - std::hypot(d.x[j] - d.x[i], d.y[j] - d.y[i]);
     if (delta > 0) e += 0.5 * w.law.kn * delta * delta;
   }
-  for (std::size_t k = 0; k < w.neighbors.walls.size(); ++k) {
-    const auto i = w.neighbors.walls.disc[k];
+  for (std::size_t k = 0; k < w.contacts.walls.size(); ++k) {
+    const auto i = w.contacts.walls.disc[k];
     double cx, cy;
-    const double dist = std::sqrt(closest_point_on_segment(w.walls[w.neighbors.walls.wall[k]], d.x[i], d.y[i], cx, cy));
+    const double dist = std::sqrt(closest_point_on_segment(w.walls[w.contacts.walls.wall[k]], d.x[i], d.y[i], cx, cy));
     const double delta = d.radius[i] - dist;
     if (delta > 0) e += 0.5 * w.law.kn * delta * delta;
   }

@@ -9,24 +9,23 @@ namespace {
 
 template <class Normal>
 void add_elastic_forces(const World& w, std::vector<WallForce>& out) {
-  const auto& wc = w.neighbors.walls;
   const auto& d = w.discs;
-  for (std::size_t k = 0; k < wc.size(); ++k) {
-    const auto i = wc.disc[k];
-    if (i >= d.size()) continue;  // list not rebuilt yet after a removal
-    const Wall& wall = w.walls[wc.wall[k]];
-    if (!wall.enabled) continue;
+  w.for_each_wall_contact([&](const WallContactView& k) {
+    const auto i = k.disc;
+    if (i >= d.size()) return;  // list not rebuilt yet after a removal
+    const Wall& wall = w.walls[k.wall];
+    if (!wall.enabled) return;
     double cx, cy;
     const double dist2 = closest_point_on_segment(wall, d.x[i], d.y[i], cx, cy);
     const double r = d.radius[i];
-    if (dist2 >= r * r || dist2 == 0.0) continue;
+    if (dist2 >= r * r || dist2 == 0.0) return;
     const double dist = std::sqrt(dist2);
     // The elastic part of the contact law's normal force (no dashpot: the servo's stress).
     const double fn = Normal::elastic(w.law.kn, r - dist, r);
     // The disc is pushed along (disc - contact point); the wall the opposite way.
-    out[wc.wall[k]].fx -= fn * (d.x[i] - cx) / dist;
-    out[wc.wall[k]].fy -= fn * (d.y[i] - cy) / dist;
-  }
+    out[k.wall].fx -= fn * (d.x[i] - cx) / dist;
+    out[k.wall].fy -= fn * (d.y[i] - cy) / dist;
+  });
 }
 
 }  // namespace

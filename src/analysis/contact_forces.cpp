@@ -26,38 +26,36 @@ void add(ContactList& c, bool wall, std::int64_t id_a, std::int64_t id_b, std::i
 template <class Normal>
 ContactList measure(const World& w) {
   ContactList c;
-  const auto& L = w.neighbors;
   const auto& d = w.discs;
-  for (std::size_t p = 0; p < L.size(); ++p) {
-    const auto i = L.first[p], j = L.second[p];
-    const double gn = L.gamma_n[p];
+  w.for_each_pair_contact([&](const PairContactView& p) {
+    const auto i = p.first, j = p.second;
+    const double gn = p.gamma_n;
     // The pair kernel of the force stage on a copy of the history: the state keeps its own.
     const ContactLane f = contact_lane<Normal>(d.x[j] - d.x[i], d.y[j] - d.y[i], d.radius[i], d.radius[j],
                                                d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.omega[i], d.omega[j], gn,
-                                               w.law.tangential_damping_ratio * gn, L.xi[p], w.law.kn, w.law.ks,
+                                               w.law.tangential_damping_ratio * gn, p.xi, w.law.kn, w.law.ks,
                                                w.law.mu, w.dt);
-    if (!f.touching) continue;
+    if (!f.touching) return;
     const double reach = d.radius[i] - 0.5 * f.delta;  // centre of i to the middle of the overlap
     add(c, false, d.id[i], d.id[j], i, j, d.x[i] + reach * f.nx, d.y[i] + reach * f.ny, f.nx, f.ny, f.fn, f.ft, f.fx,
         f.fy, f.delta, f.at_limit);
-  }
+  });
   // Rows of the enabled walls, as the output's `walls` dataset lists them.
   std::vector<std::int64_t> row(w.walls.size(), -1);
   std::int64_t enabled = 0;
   for (std::size_t k = 0; k < w.walls.size(); ++k)
     if (w.walls[k].enabled) row[k] = enabled++;
-  const auto& wc = L.walls;
-  for (std::size_t k = 0; k < wc.size(); ++k) {
-    const auto i = wc.disc[k];
-    if (row[wc.wall[k]] < 0) continue;
-    const WallContactForce f =
-        wall_contact_force<Normal>(w.walls[wc.wall[k]], d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i], d.radius[i],
-                                   wc.gamma_n[k], wc.mass[k], wc.xi[k], w.law, w.dt);
-    if (!f.touching) continue;
+  w.for_each_wall_contact([&](const WallContactView& k) {
+    const auto i = k.disc;
+    if (row[k.wall] < 0) return;
+    const WallContactForce f = wall_contact_force<Normal>(w.walls[k.wall], d.x[i], d.y[i], d.vx[i], d.vy[i],
+                                                          d.omega[i], d.radius[i], k.gamma_n, k.mass, k.xi, w.law,
+                                                          w.dt);
+    if (!f.touching) return;
     const double reach = d.radius[i] - 0.5 * f.delta;
-    add(c, true, row[wc.wall[k]], d.id[i], -1, i, d.x[i] - reach * f.nx, d.y[i] - reach * f.ny, f.nx, f.ny, f.fn,
+    add(c, true, row[k.wall], d.id[i], -1, i, d.x[i] - reach * f.nx, d.y[i] - reach * f.ny, f.nx, f.ny, f.fn,
         f.ft, f.fn * f.nx + f.ft * -f.ny, f.fn * f.ny + f.ft * f.nx, f.delta, f.at_limit);
-  }
+  });
   return c;
 }
 
@@ -70,12 +68,10 @@ ContactList measure(const World& w) {
 }  // namespace
 
 ContactList measure_contact_forces(const World& world) {
-  const auto& L = world.neighbors;
-  const bool list_matches = L.valid && L.x_ref.size() == world.discs.size();
-  if (list_matches && world.moved + wall_displacement(L, world.walls) <= 0.5 * L.skin) return measure(world);
+  if (!world.contacts_stale()) return measure(world);
   // The next step rebuilds first: so does the copy, keeping the disc order of the output.
   World copy = world;
-  build_neighbor_list(copy.neighbors, copy.discs, copy.clusters, copy.walls, copy.law, copy.dt, false);
+  copy.rebuild_contacts(false);
   return measure(copy);
 }
 

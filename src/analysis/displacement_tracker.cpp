@@ -31,20 +31,19 @@ std::vector<SnapshotField> DisplacementTracker::fields(const World& w) const {
     return id < a.size() ? a[id] : kNaN;
   };
   // Largest displacement since the previous output relative to any touching disc.
-  const auto& L = w.neighbors;
-  for (std::size_t p = 0; p < L.size(); ++p) {
-    const auto i = L.first[p], j = L.second[p];
+  w.for_each_pair_contact([&](const PairContactView& p) {
+    const auto i = p.first, j = p.second;
     // Skip pairs made stale by removals since the list was built.
-    if (i >= d.size() || j >= d.size() || d.id[i] != L.id_first[p] || d.id[j] != L.id_second[p]) continue;
+    if (i >= d.size() || j >= d.size() || d.id[i] != p.id_first || d.id[j] != p.id_second) return;
     const double gap = std::hypot(d.x[j] - d.x[i], d.y[j] - d.y[i]) - d.radius[i] - d.radius[j];
-    if (gap > 0) continue;
+    if (gap > 0) return;
     const double ux = (d.x[j] - prev(prev_x_[0], j)) - (d.x[i] - prev(prev_x_[0], i));
     const double uy = (d.y[j] - prev(prev_y_[0], j)) - (d.y[i] - prev(prev_y_[0], i));
     const double u = std::hypot(ux, uy);
-    if (!std::isfinite(u)) continue;
+    if (!std::isfinite(u)) return;
     rel[i] = std::max(rel[i], u);
     rel[j] = std::max(rel[j], u);
-  }
+  });
   for (std::size_t i = 0; i < d.size(); ++i) {
     dx3[i] = d.x[i] - prev(prev_x_[2], i);
     dy3[i] = d.y[i] - prev(prev_y_[2], i);

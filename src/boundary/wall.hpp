@@ -24,18 +24,6 @@ struct Wall {
   double length() const;
 };
 
-// A disc touching (or within the skin of) a wall, with the tangential spring history.
-struct WallContacts {
-  std::vector<std::uint32_t> wall, disc;
-  std::vector<double> xi;
-  std::vector<double> gamma_n;         // normal dashpot coefficient of the contact
-  std::vector<double> mass;            // mass of the body the disc belongs to
-  std::vector<std::uint8_t> touching;  // whether the disc touched the wall in the last force pass
-  std::vector<std::uint8_t> at_limit;  // whether the tangential force sat on the Coulomb limit
-  void clear() { wall.clear(); disc.clear(); xi.clear(); gamma_n.clear(); mass.clear(); touching.clear(); at_limit.clear(); }
-  std::size_t size() const { return disc.size(); }
-};
-
 // Closest point of segment (a, b) to p; returns the squared distance.
 double closest_point_on_segment(const Wall& w, double px, double py, double& cx, double& cy);
 

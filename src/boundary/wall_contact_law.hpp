@@ -21,7 +21,7 @@ struct WallContactForce {
 };
 
 // Disc at (x, y) with velocity (vx, vy), spin omega and radius r; gamma_n, mass and xi_old
-// are the contact's own (WallContacts). Normal is a registered normal law
+// are the contact's own (WallContacts, contact/contact_store.hpp). Normal is a registered normal law
 // (contact/normal_laws.hpp); the tangential law is the wall's friction kind, each built from
 // the kernels of contact/law_kernels.hpp that the pair kernel uses too.
 template <class Normal>

@@ -30,9 +30,8 @@ void contact_range(WallContacts& wc, const Discs& d, const std::vector<Wall>& wa
 
 }  // namespace
 
-void wall_forces_share(NeighborList& L, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
+void wall_forces_share(WallContacts& wc, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
                        double dt, DiscForce* forces, const ThreadSplit& split, std::size_t t) {
-  auto& wc = L.walls;
   // The first contact at or after (wall w, disc i): contacts are in wall, then disc order.
   auto first_at = [&](std::size_t w, std::ptrdiff_t i) {
     std::size_t lo = 0, hi = wc.size();

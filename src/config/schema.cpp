@@ -85,7 +85,8 @@ const std::vector<KeySpec>& schema() {
       real("contact.mu_wall", 0.3, ge(0), none, "friction coefficient of rough walls [-]"),
       text("contact.normal_force", "linear", normal_law_names(),
            "normal force law: linear = k_n delta - gamma_n v_n clamped at zero (the dashpot never pulls), "
-           "linear_pull = the same without the clamp (LAMMPS gran/hooke/history); docs/model.md"),
+           "linear_pull = the same without the clamp (LAMMPS gran/hooke/history), hertz = sqrt(r_eff delta) times "
+           "the clamped one (LAMMPS gran/hertz/history, with contact.damping = \"per_mass\"); docs/model.md"),
       text("contact.damping", "restitution", {"restitution", "per_mass"},
            "how the normal dashpot gamma_n is set: restitution = from contact.restitution, the same for "
            "pairs and walls (only with contact.normal_force = linear); per_mass = contact.damping_rate "

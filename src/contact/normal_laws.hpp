@@ -10,12 +10,13 @@
 #include <utility>
 #include <vector>
 
+#include "contact/normal_hertz.hpp"
 #include "contact/normal_linear.hpp"
 
 namespace orogen {
 
 // ---- Registration: add the new law's type here (its header above). ----
-using NormalLaws = std::tuple<LinearNormal, LinearPullNormal>;
+using NormalLaws = std::tuple<LinearNormal, LinearPullNormal, HertzNormal>;
 // ------------------------------------------------------------------------
 
 constexpr std::size_t kNormalLawCount = std::tuple_size_v<NormalLaws>;

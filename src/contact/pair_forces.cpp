@@ -124,11 +124,11 @@ void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& 
 
 }  // namespace
 
-void pair_forces_share(NeighborList& L, const Discs& discs, const ContactLaw& law, double dt, DiscForce* force,
+void pair_forces_share(const NeighborList& L, PairContacts& contacts, const Discs& discs, const ContactLaw& law, double dt, DiscForce* force,
                        const ThreadSplit& split, std::size_t t) {
   const DiscView d{discs.x.data(), discs.y.data(), discs.vx.data(), discs.vy.data(), discs.omega.data(),
                    discs.radius.data()};
-  const PairView pairs{L.first.data(), L.second.data(), L.gamma_n.data(), L.xi.data()};
+  const PairView pairs{L.first.data(), L.second.data(), contacts.gamma_n.data(), contacts.xi.data()};
   for (std::ptrdiff_t i = split.disc[t]; i < split.disc[t + 1]; ++i) force[i] = {0.0, 0.0, 0.0};
 #pragma omp barrier
   with_normal_law(law.normal_force, [&](auto normal) {

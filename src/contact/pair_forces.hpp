@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "contact/contact_law.hpp"
+#include "contact/contact_store.hpp"
 #include "contact/neighbor_list.hpp"
 #include "contact/thread_split.hpp"
 #include "particles/discs.hpp"
@@ -28,7 +29,7 @@ struct PairScratch {
 // (World::step_stages) calls it, `forces` already sized to the discs; it clears thread t's
 // discs, then sums its even chunks, then its odd ones, with the team's barriers between (so the
 // forces are whole when it returns).
-void pair_forces_share(NeighborList& list, const Discs& discs, const ContactLaw& law, double dt, DiscForce* forces,
+void pair_forces_share(const NeighborList& list, PairContacts& contacts, const Discs& discs, const ContactLaw& law, double dt, DiscForce* forces,
                        const ThreadSplit& split, std::size_t t);
 
 }  // namespace orogen

@@ -1,227 +1,235 @@
 #include "exhumation/analysis_state.hpp"
 
+#include "io/archive_fields.hpp"
 #include "io/binary_archive.hpp"
 
 namespace orogen {
+namespace {
 
-void save_analysis_state(const std::filesystem::path& path, const AnalysisState& s) {
-  ArchiveWriter w;
-  const auto& res = s.results;
-  const auto& tr = s.tracker;
-  const auto& p = tr.params();
-  w.put_string("run_identity", s.run_identity);
-  w.put("closure", res.settings.closure);
-  w.put_scalar("flux_window", res.settings.flux_window);
-  w.put_scalar("steady_fraction", res.settings.steady_fraction);
-  w.put_scalar("particle_stride", res.settings.particle_stride);
-  w.put_scalar("trajectory_output", res.settings.trajectory_output);
-  w.put_scalar("flux_in", res.flux_in);
-  w.put_scalar("v", res.v);
-  w.put_scalar("solid_fraction", res.solid_fraction);
-  w.put_scalar("h0", p.h0);
-  w.put_scalar("x_lo", p.x_lo);
-  w.put_scalar("column_width", p.column_width);
-  w.put_scalar("n_columns", static_cast<std::uint64_t>(p.n_columns));
-  w.put_scalar("mean_radius", p.mean_radius);
-
-  // Tracker.
-  std::vector<std::int64_t> ids, last_output;
-  std::vector<double> radius, first_time, time, depth, max_depth, last_deep;
-  std::vector<std::uint32_t> dips;
-  std::vector<std::uint8_t> seen, deep_now;
-  for (const auto& [id, q] : tr.particles_) {
-    ids.push_back(id);
-    last_output.push_back(q.last_output);
-    radius.push_back(q.radius);
-    first_time.push_back(q.ages.first_time_);
-    time.push_back(q.ages.time_);
-    depth.push_back(q.ages.depth_);
-    max_depth.push_back(q.ages.max_depth_);
-    seen.push_back(q.ages.seen_);
-    last_deep.insert(last_deep.end(), q.ages.last_deep_.begin(), q.ages.last_deep_.end());
-    dips.insert(dips.end(), q.ages.dips_.begin(), q.ages.dips_.end());
-    deep_now.insert(deep_now.end(), q.ages.deep_now_.begin(), q.ages.deep_now_.end());
-  }
-  w.put("p_id", ids);
-  w.put("p_last_output", last_output);
-  w.put("p_radius", radius);
-  w.put("p_first_time", first_time);
-  w.put("p_time", time);
-  w.put("p_depth", depth);
-  w.put("p_max_depth", max_depth);
-  w.put("p_seen", seen);
-  w.put("p_last_deep", last_deep);
-  w.put("p_dips", dips);
-  w.put("p_deep_now", deep_now);
-  w.put("prev_surface_age", tr.prev_surface_age_);
-  w.put("cum_area", tr.cum_area_);
-  w.put("jump_total", tr.jump_total_);
-  w.put("cum_count", tr.cum_count_);
-  w.put("jump_count", tr.jump_count_);
-  w.put_scalar("outputs", tr.outputs_);
-  w.put_scalar("last_step", tr.last_step_);
+// The file's layout: every record, flat, each listed once with its key in fields() for both
+// the save and the load (io/archive_fields.hpp). Per-closure values of particles and removals
+// are closure-minor (particle j, closure i at j * n_closure + i).
+struct StateArchive {
+  std::string run_identity;
+  AnalysisSettings settings;
+  double flux_in = 0, v = 0, solid_fraction = 0;
+  double h0 = 0, x_lo = 0, column_width = 0, mean_radius = 0;
+  std::uint64_t n_columns = 0;
+  std::vector<std::int64_t> p_id, p_last_output;
+  std::vector<double> p_radius, p_first_time, p_time, p_depth, p_max_depth, p_last_deep;
+  std::vector<std::uint32_t> p_dips;
+  std::vector<std::uint8_t> p_seen, p_deep_now;
+  std::vector<double> prev_surface_age, cum_area, jump_total;
+  std::vector<std::int64_t> cum_count, jump_count;
+  std::int64_t outputs = 0, last_step = 0;
   std::vector<std::int64_t> e_step, e_id, e_col, e_last;
   std::vector<double> e_time, e_x, e_y, e_r, e_d, e_m, e_age;
   std::vector<std::uint8_t> e_un;
-  for (const auto& e : tr.eroded_) {
-    e_step.push_back(e.event.step);
-    e_id.push_back(e.event.id);
-    e_col.push_back(e.column);
-    e_last.push_back(e.last_output);
-    e_time.push_back(e.event.time);
-    e_x.push_back(e.event.x);
-    e_y.push_back(e.event.y);
-    e_r.push_back(e.radius);
-    e_d.push_back(e.depth);
-    e_m.push_back(e.max_depth);
-    e_age.insert(e_age.end(), e.age.begin(), e.age.end());
-    e_un.insert(e_un.end(), e.unreset.begin(), e.unreset.end());
-  }
-  w.put("e_step", e_step);
-  w.put("e_id", e_id);
-  w.put("e_col", e_col);
-  w.put("e_last", e_last);
-  w.put("e_time", e_time);
-  w.put("e_x", e_x);
-  w.put("e_y", e_y);
-  w.put("e_r", e_r);
-  w.put("e_d", e_d);
-  w.put("e_m", e_m);
-  w.put("e_age", e_age);
-  w.put("e_un", e_un);
-
-  // Per-output summary and the files' bookkeeping.
   std::vector<std::int64_t> r_step, r_count;
   std::vector<double> r_time, r_S, r_area;
-  for (const auto& r : res.outputs) {
-    r_step.push_back(r.step);
-    r_count.push_back(r.eroded_count);
-    r_time.push_back(r.time);
-    r_S.push_back(r.S);
-    r_area.push_back(r.eroded_area);
+  std::vector<std::int64_t> particle_ids;
+  std::uint64_t columns_csv_bytes = 0;
+
+  template <class Self, class F>
+  static void fields(Self& a, F&& f) {
+    f("run_identity", a.run_identity);
+    f("closure", a.settings.closure);
+    f("flux_window", a.settings.flux_window);
+    f("steady_fraction", a.settings.steady_fraction);
+    f("particle_stride", a.settings.particle_stride);
+    f("trajectory_output", a.settings.trajectory_output);
+    f("flux_in", a.flux_in);
+    f("v", a.v);
+    f("solid_fraction", a.solid_fraction);
+    f("h0", a.h0);
+    f("x_lo", a.x_lo);
+    f("column_width", a.column_width);
+    f("n_columns", a.n_columns);
+    f("mean_radius", a.mean_radius);
+    // Tracker: particles.
+    f("p_id", a.p_id);
+    f("p_last_output", a.p_last_output);
+    f("p_radius", a.p_radius);
+    f("p_first_time", a.p_first_time);
+    f("p_time", a.p_time);
+    f("p_depth", a.p_depth);
+    f("p_max_depth", a.p_max_depth);
+    f("p_seen", a.p_seen);
+    f("p_last_deep", a.p_last_deep);
+    f("p_dips", a.p_dips);
+    f("p_deep_now", a.p_deep_now);
+    // Tracker: columns and counts.
+    f("prev_surface_age", a.prev_surface_age);
+    f("cum_area", a.cum_area);
+    f("jump_total", a.jump_total);
+    f("cum_count", a.cum_count);
+    f("jump_count", a.jump_count);
+    f("outputs", a.outputs);
+    f("last_step", a.last_step);
+    // Tracker: removals.
+    f("e_step", a.e_step);
+    f("e_id", a.e_id);
+    f("e_col", a.e_col);
+    f("e_last", a.e_last);
+    f("e_time", a.e_time);
+    f("e_x", a.e_x);
+    f("e_y", a.e_y);
+    f("e_r", a.e_r);
+    f("e_d", a.e_d);
+    f("e_m", a.e_m);
+    f("e_age", a.e_age);
+    f("e_un", a.e_un);
+    // Per-output summary and the files' bookkeeping.
+    f("r_step", a.r_step);
+    f("r_count", a.r_count);
+    f("r_time", a.r_time);
+    f("r_S", a.r_S);
+    f("r_area", a.r_area);
+    f("particle_ids", a.particle_ids);
+    f("columns_csv_bytes", a.columns_csv_bytes);
   }
-  w.put("r_step", r_step);
-  w.put("r_count", r_count);
-  w.put("r_time", r_time);
-  w.put("r_S", r_S);
-  w.put("r_area", r_area);
-  w.put("particle_ids", res.particle_ids);
-  w.put_scalar("columns_csv_bytes", res.columns_csv_bytes);
+};
+
+}  // namespace
+
+void save_analysis_state(const std::filesystem::path& path, const AnalysisState& s) {
+  StateArchive a;
+  const auto& res = s.results;
+  const auto& tr = s.tracker;
+  const auto& p = tr.params();
+  a.run_identity = s.run_identity;
+  a.settings = res.settings;
+  a.flux_in = res.flux_in;
+  a.v = res.v;
+  a.solid_fraction = res.solid_fraction;
+  a.h0 = p.h0;
+  a.x_lo = p.x_lo;
+  a.column_width = p.column_width;
+  a.n_columns = static_cast<std::uint64_t>(p.n_columns);
+  a.mean_radius = p.mean_radius;
+  for (const auto& [id, q] : tr.particles_) {
+    a.p_id.push_back(id);
+    a.p_last_output.push_back(q.last_output);
+    a.p_radius.push_back(q.radius);
+    a.p_first_time.push_back(q.ages.first_time_);
+    a.p_time.push_back(q.ages.time_);
+    a.p_depth.push_back(q.ages.depth_);
+    a.p_max_depth.push_back(q.ages.max_depth_);
+    a.p_seen.push_back(q.ages.seen_);
+    a.p_last_deep.insert(a.p_last_deep.end(), q.ages.last_deep_.begin(), q.ages.last_deep_.end());
+    a.p_dips.insert(a.p_dips.end(), q.ages.dips_.begin(), q.ages.dips_.end());
+    a.p_deep_now.insert(a.p_deep_now.end(), q.ages.deep_now_.begin(), q.ages.deep_now_.end());
+  }
+  a.prev_surface_age = tr.prev_surface_age_;
+  a.cum_area = tr.cum_area_;
+  a.jump_total = tr.jump_total_;
+  a.cum_count = tr.cum_count_;
+  a.jump_count = tr.jump_count_;
+  a.outputs = tr.outputs_;
+  a.last_step = tr.last_step_;
+  for (const auto& e : tr.eroded_) {
+    a.e_step.push_back(e.event.step);
+    a.e_id.push_back(e.event.id);
+    a.e_col.push_back(e.column);
+    a.e_last.push_back(e.last_output);
+    a.e_time.push_back(e.event.time);
+    a.e_x.push_back(e.event.x);
+    a.e_y.push_back(e.event.y);
+    a.e_r.push_back(e.radius);
+    a.e_d.push_back(e.depth);
+    a.e_m.push_back(e.max_depth);
+    a.e_age.insert(a.e_age.end(), e.age.begin(), e.age.end());
+    a.e_un.insert(a.e_un.end(), e.unreset.begin(), e.unreset.end());
+  }
+  for (const auto& r : res.outputs) {
+    a.r_step.push_back(r.step);
+    a.r_count.push_back(r.eroded_count);
+    a.r_time.push_back(r.time);
+    a.r_S.push_back(r.S);
+    a.r_area.push_back(r.eroded_area);
+  }
+  a.particle_ids = res.particle_ids;
+  a.columns_csv_bytes = res.columns_csv_bytes;
+  ArchiveWriter w;
+  StateArchive::fields(a, ArchiveSaver(w));
   w.finish(path);
 }
 
 AnalysisState load_analysis_state(const std::filesystem::path& path) {
-  const ArchiveReader a(path);
+  StateArchive a;
+  const ArchiveReader in(path);
+  StateArchive::fields(a, ArchiveLoader(in));
   AnalysisResults res;
-  a.get("closure", res.settings.closure);
-  res.settings.flux_window = a.get_scalar<int>("flux_window");
-  res.settings.steady_fraction = a.get_scalar<double>("steady_fraction");
-  res.settings.particle_stride = a.get_scalar<int>("particle_stride");
-  res.settings.trajectory_output = a.get_scalar<std::int64_t>("trajectory_output");
-  res.flux_in = a.get_scalar<double>("flux_in");
-  res.v = a.get_scalar<double>("v");
-  res.solid_fraction = a.get_scalar<double>("solid_fraction");
+  res.settings = a.settings;
+  res.flux_in = a.flux_in;
+  res.v = a.v;
+  res.solid_fraction = a.solid_fraction;
   ExhumationParams p;
-  p.h0 = a.get_scalar<double>("h0");
+  p.h0 = a.h0;
   p.closure = res.settings.closure;
-  p.x_lo = a.get_scalar<double>("x_lo");
-  p.column_width = a.get_scalar<double>("column_width");
-  p.n_columns = static_cast<std::size_t>(a.get_scalar<std::uint64_t>("n_columns"));
-  p.mean_radius = a.get_scalar<double>("mean_radius");
+  p.x_lo = a.x_lo;
+  p.column_width = a.column_width;
+  p.n_columns = static_cast<std::size_t>(a.n_columns);
+  p.mean_radius = a.mean_radius;
   p.particle_stride = res.settings.particle_stride;
-  AnalysisState s{.run_identity = a.get_string("run_identity"), .results = {}, .tracker = ExhumationTracker(p)};
+  AnalysisState s{.run_identity = a.run_identity, .results = {}, .tracker = ExhumationTracker(p)};
   auto& tr = s.tracker;
   const std::size_t nc = p.closure.size(), ncol = p.n_columns;
 
-  std::vector<std::int64_t> ids, last_output;
-  std::vector<double> radius, first_time, time, depth, max_depth, last_deep;
-  std::vector<std::uint32_t> dips;
-  std::vector<std::uint8_t> seen, deep_now;
-  a.get("p_id", ids);
-  a.get("p_last_output", last_output);
-  a.get("p_radius", radius);
-  a.get("p_first_time", first_time);
-  a.get("p_time", time);
-  a.get("p_depth", depth);
-  a.get("p_max_depth", max_depth);
-  a.get("p_seen", seen);
-  a.get("p_last_deep", last_deep);
-  a.get("p_dips", dips);
-  a.get("p_deep_now", deep_now);
-  const std::size_t n = ids.size();
-  if (last_deep.size() != n * nc || dips.size() != n * nc || deep_now.size() != n * nc || radius.size() != n)
+  const std::size_t n = a.p_id.size();
+  if (a.p_last_deep.size() != n * nc || a.p_dips.size() != n * nc || a.p_deep_now.size() != n * nc ||
+      a.p_radius.size() != n)
     throw std::runtime_error("analysis state " + path.string() + ": particle arrays of different lengths");
   for (std::size_t j = 0; j < n; ++j) {
     ExhumationTracker::Particle q;
     q.ages = ClosureAges(nc);
-    q.radius = radius[j];
-    q.last_output = last_output[j];
-    q.ages.first_time_ = first_time[j];
-    q.ages.time_ = time[j];
-    q.ages.depth_ = depth[j];
-    q.ages.max_depth_ = max_depth[j];
-    q.ages.seen_ = seen[j] != 0;
+    q.radius = a.p_radius[j];
+    q.last_output = a.p_last_output[j];
+    q.ages.first_time_ = a.p_first_time[j];
+    q.ages.time_ = a.p_time[j];
+    q.ages.depth_ = a.p_depth[j];
+    q.ages.max_depth_ = a.p_max_depth[j];
+    q.ages.seen_ = a.p_seen[j] != 0;
     for (std::size_t i = 0; i < nc; ++i) {
-      q.ages.last_deep_[i] = last_deep[j * nc + i];
-      q.ages.dips_[i] = dips[j * nc + i];
-      q.ages.deep_now_[i] = deep_now[j * nc + i];
+      q.ages.last_deep_[i] = a.p_last_deep[j * nc + i];
+      q.ages.dips_[i] = a.p_dips[j * nc + i];
+      q.ages.deep_now_[i] = a.p_deep_now[j * nc + i];
     }
-    tr.particles_.emplace(ids[j], std::move(q));
+    tr.particles_.emplace(a.p_id[j], std::move(q));
   }
-  a.get("prev_surface_age", tr.prev_surface_age_);
-  a.get("cum_area", tr.cum_area_);
-  a.get("jump_total", tr.jump_total_);
-  a.get("cum_count", tr.cum_count_);
-  a.get("jump_count", tr.jump_count_);
+  tr.prev_surface_age_ = std::move(a.prev_surface_age);
+  tr.cum_area_ = std::move(a.cum_area);
+  tr.jump_total_ = std::move(a.jump_total);
+  tr.cum_count_ = std::move(a.cum_count);
+  tr.jump_count_ = std::move(a.jump_count);
   if (tr.prev_surface_age_.size() != nc * ncol || tr.cum_area_.size() != ncol)
     throw std::runtime_error("analysis state " + path.string() + ": column arrays of the wrong length");
-  tr.outputs_ = a.get_scalar<std::int64_t>("outputs");
-  tr.last_step_ = a.get_scalar<std::int64_t>("last_step");
-  std::vector<std::int64_t> e_step, e_id, e_col, e_last;
-  std::vector<double> e_time, e_x, e_y, e_r, e_d, e_m, e_age;
-  std::vector<std::uint8_t> e_un;
-  a.get("e_step", e_step);
-  a.get("e_id", e_id);
-  a.get("e_col", e_col);
-  a.get("e_last", e_last);
-  a.get("e_time", e_time);
-  a.get("e_x", e_x);
-  a.get("e_y", e_y);
-  a.get("e_r", e_r);
-  a.get("e_d", e_d);
-  a.get("e_m", e_m);
-  a.get("e_age", e_age);
-  a.get("e_un", e_un);
-  if (e_age.size() != e_step.size() * nc) throw std::runtime_error("analysis state " + path.string() + ": removals damaged");
-  for (std::size_t k = 0; k < e_step.size(); ++k) {
+  tr.outputs_ = a.outputs;
+  tr.last_step_ = a.last_step;
+  if (a.e_age.size() != a.e_step.size() * nc) throw std::runtime_error("analysis state " + path.string() + ": removals damaged");
+  for (std::size_t k = 0; k < a.e_step.size(); ++k) {
     ErodedParticle e;
-    e.event = {.step = e_step[k], .time = e_time[k], .id = e_id[k], .x = e_x[k], .y = e_y[k]};
-    e.column = e_col[k];
-    e.last_output = e_last[k];
-    e.radius = e_r[k];
-    e.depth = e_d[k];
-    e.max_depth = e_m[k];
-    e.age.assign(e_age.begin() + static_cast<std::ptrdiff_t>(k * nc), e_age.begin() + static_cast<std::ptrdiff_t>((k + 1) * nc));
-    e.unreset.assign(e_un.begin() + static_cast<std::ptrdiff_t>(k * nc), e_un.begin() + static_cast<std::ptrdiff_t>((k + 1) * nc));
+    e.event = {.step = a.e_step[k], .time = a.e_time[k], .id = a.e_id[k], .x = a.e_x[k], .y = a.e_y[k]};
+    e.column = a.e_col[k];
+    e.last_output = a.e_last[k];
+    e.radius = a.e_r[k];
+    e.depth = a.e_d[k];
+    e.max_depth = a.e_m[k];
+    const auto at = [&](std::size_t m) { return static_cast<std::ptrdiff_t>(m * nc); };
+    e.age.assign(a.e_age.begin() + at(k), a.e_age.begin() + at(k + 1));
+    e.unreset.assign(a.e_un.begin() + at(k), a.e_un.begin() + at(k + 1));
     tr.eroded_.push_back(std::move(e));
   }
 
-  std::vector<std::int64_t> r_step, r_count;
-  std::vector<double> r_time, r_S, r_area;
-  a.get("r_step", r_step);
-  a.get("r_count", r_count);
-  a.get("r_time", r_time);
-  a.get("r_S", r_S);
-  a.get("r_area", r_area);
-  const std::size_t nt = r_step.size();
-  if (static_cast<std::int64_t>(nt) != tr.outputs_ || r_count.size() != nt || r_time.size() != nt ||
-      r_S.size() != nt || r_area.size() != nt)
+  const std::size_t nt = a.r_step.size();
+  if (static_cast<std::int64_t>(nt) != tr.outputs_ || a.r_count.size() != nt || a.r_time.size() != nt ||
+      a.r_S.size() != nt || a.r_area.size() != nt)
     throw std::runtime_error("analysis state " + path.string() + ": output count damaged");
   for (std::size_t t = 0; t < nt; ++t)
-    res.outputs.push_back({.step = r_step[t], .time = r_time[t], .S = r_S[t], .eroded_area = r_area[t],
-                           .eroded_count = r_count[t]});
-  a.get("particle_ids", res.particle_ids);
-  res.columns_csv_bytes = a.get_scalar<std::uint64_t>("columns_csv_bytes");
+    res.outputs.push_back({.step = a.r_step[t], .time = a.r_time[t], .S = a.r_S[t], .eroded_area = a.r_area[t],
+                           .eroded_count = a.r_count[t]});
+  res.particle_ids = std::move(a.particle_ids);
+  res.columns_csv_bytes = a.columns_csv_bytes;
   s.results = std::move(res);
   return s;
 }

@@ -257,57 +257,12 @@ std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
 }
 
 void BiaxialExperiment::save(ArchiveWriter& out) const {
-  out.put_scalar("biaxial.phase", phase_);
-  out.put_scalar("biaxial.mu", mu_);
-  out.put_scalar("biaxial.sigma3_code", sigma3_code_);
-  out.put_scalar("biaxial.h0", h0_);
-  out.put_scalar("biaxial.a0", a0_);
-  out.put("biaxial.latest", std::vector<double>(latest_.begin(), latest_.end()));
-  out.put("biaxial.output_sum", std::vector<double>(output_sum_.begin(), output_sum_.end()));
-  out.put_scalar("biaxial.output_steps", output_steps_);
-  out.put("biaxial.check_sum", std::vector<double>(check_sum_.begin(), check_sum_.end()));
-  out.put_scalar("biaxial.check_steps", check_steps_);
-  std::vector<double> e, v, s1, s3;
-  for (const auto& r : rows_) {
-    e.push_back(r.axial_strain);
-    v.push_back(r.vol_strain);
-    s1.push_back(r.sigma1);
-    s3.push_back(r.sigma3);
-  }
-  out.put("biaxial.rows.axial_strain", e);
-  out.put("biaxial.rows.vol_strain", v);
-  out.put("biaxial.rows.sigma1", s1);
-  out.put("biaxial.rows.sigma3", s3);
-  out.put_scalar("biaxial.coordination_start", coordination_start_);
-  out.put_scalar("biaxial.solid_fraction_start", solid_fraction_start_);
+  state_fields(*this, ArchiveSaver(out));
   displacements_.save(out, "biaxial.disp");
 }
 
 void BiaxialExperiment::load(const ArchiveReader& in) {
-  auto get4 = [&](std::string_view name, std::array<double, 4>& a) {
-    std::vector<double> v;
-    in.get(name, v);
-    std::copy_n(v.begin(), std::min<std::size_t>(4, v.size()), a.begin());
-  };
-  phase_ = in.get_scalar<int>("biaxial.phase");
-  mu_ = in.get_scalar<double>("biaxial.mu");
-  sigma3_code_ = in.get_scalar<double>("biaxial.sigma3_code");
-  h0_ = in.get_scalar<double>("biaxial.h0");
-  a0_ = in.get_scalar<double>("biaxial.a0");
-  get4("biaxial.latest", latest_);
-  get4("biaxial.output_sum", output_sum_);
-  output_steps_ = in.get_scalar<std::uint64_t>("biaxial.output_steps");
-  get4("biaxial.check_sum", check_sum_);
-  check_steps_ = in.get_scalar<std::uint64_t>("biaxial.check_steps");
-  std::vector<double> e, v, s1, s3;
-  in.get("biaxial.rows.axial_strain", e);
-  in.get("biaxial.rows.vol_strain", v);
-  in.get("biaxial.rows.sigma1", s1);
-  in.get("biaxial.rows.sigma3", s3);
-  rows_.clear();
-  for (std::size_t k = 0; k < e.size(); ++k) rows_.push_back({e[k], v[k], s1[k], s3[k]});
-  coordination_start_ = in.get_scalar<double>("biaxial.coordination_start");
-  solid_fraction_start_ = in.get_scalar<double>("biaxial.solid_fraction_start");
+  state_fields(*this, ArchiveLoader(in));
   displacements_.load(in, "biaxial.disp");
 }
 
@@ -339,8 +294,7 @@ std::unique_ptr<Experiment> make_biaxial_experiment(const Config& c) {
   s.strain_end = c.get_float("biaxial.strain_end");
   s.outputs = c.get_int32("biaxial.outputs");
   s.servo_gain = c.get_float("biaxial.servo_gain");
-  s.packing = packing_spec(c);
-  s.settle = settle_spec(c);
+  read_layer_keys(c, s);
   check_material_size(c, s.width, s.height, {"biaxial.width", "biaxial.height"});
   // Quasi-static: inertial number below 1e-2 even at the lowest mean stress, sigma3, for the
   // largest discs (MODEL's bulk friction is the rate-independent limit).

@@ -12,6 +12,7 @@
 #include "analysis/biaxial_results.hpp"
 #include "analysis/displacement_tracker.hpp"
 #include "experiments/experiment.hpp"
+#include "io/archive_fields.hpp"
 #include "experiments/packing_experiment.hpp"
 
 namespace orogen {
@@ -72,6 +73,27 @@ class BiaxialExperiment final : public Experiment {
   // Stresses averaged over the steps since the last output (the latest ones if none).
   std::array<double, 4> mean_stresses() const;
   BiaxialRow row(const World& world) const;
+  // The checkpointed state, each field once with its key, for save() and load()
+  // (io/archive_fields.hpp); the displacement tracker saves itself.
+  template <class Self, class F>
+  static void state_fields(Self& self, F&& f) {
+    f("biaxial.phase", self.phase_);
+    f("biaxial.mu", self.mu_);
+    f("biaxial.sigma3_code", self.sigma3_code_);
+    f("biaxial.h0", self.h0_);
+    f("biaxial.a0", self.a0_);
+    f("biaxial.latest", self.latest_);
+    f("biaxial.output_sum", self.output_sum_);
+    f("biaxial.output_steps", self.output_steps_);
+    f("biaxial.check_sum", self.check_sum_);
+    f("biaxial.check_steps", self.check_steps_);
+    f("biaxial.rows.axial_strain", column(self.rows_, &BiaxialRow::axial_strain));
+    f("biaxial.rows.vol_strain", column(self.rows_, &BiaxialRow::vol_strain));
+    f("biaxial.rows.sigma1", column(self.rows_, &BiaxialRow::sigma1));
+    f("biaxial.rows.sigma3", column(self.rows_, &BiaxialRow::sigma3));
+    f("biaxial.coordination_start", self.coordination_start_);
+    f("biaxial.solid_fraction_start", self.solid_fraction_start_);
+  }
 
   BiaxialSpec spec_;
   int phase_ = Consolidating;

@@ -1,11 +1,10 @@
 // Applies the engine sections of the configuration to a World.
 #include <fmt/format.h>
 
-#include <numbers>
-
 #include "config/config.hpp"
 #include "contact/normal_laws.hpp"
 #include "experiments/experiment.hpp"
+#include "experiments/time_step_config.hpp"
 
 namespace orogen {
 
@@ -29,16 +28,14 @@ void apply_engine_config(const Config& c, World& w) {
   w.law.tangential_damping_ratio = c.get_float("contact.tangential_damping_ratio");
   w.neighbors.skin = c.get_float("neighbor.skin");
   w.sort_every = c.get_int32("neighbor.sort_every");
-  // The limit for the smallest disc the configuration can make (the world may be empty yet).
-  const double d_min = c.get_float("particles.d_min");
-  const double limit = stable_time_step(w.law.kn, 0.5 * std::numbers::pi * 0.25 * d_min * d_min);
-  const double dt = c.get_float("time.dt");
-  if (dt > limit)
-    throw config_error(c.sources_of({"time.dt", "contact.kn", "particles.d_min"}), "time.dt", fmt::format("{}", dt),
+  const ConfigTimeStep step = config_time_step(c);
+  if (step.given && step.dt > step.limit)
+    throw config_error(c.sources_of({"time.dt", "contact.kn", "particles.d_min"}), "time.dt",
+                       fmt::format("{}", step.dt),
                        fmt::format("must not exceed the stability limit 0.1 * 2 pi sqrt(m_min_eff / k_n) = {:.6g} "
                                    "computed from {} (or use 0 to compute it)",
-                                   limit, c.describe({"contact.kn", "particles.d_min"})));
-  w.dt = dt > 0 ? dt : c.get_float("time.dt_fraction") * limit;
+                                   step.limit, c.describe({"contact.kn", "particles.d_min"})));
+  w.dt = step.dt;
 }
 
 }  // namespace orogen

@@ -9,6 +9,8 @@
 
 #include "analysis/contact_stats.hpp"
 #include "analysis/surface.hpp"
+#include "config/config.hpp"
+#include "experiments/spec_from_config.hpp"
 #include "io/snapshot_writer.hpp"
 
 namespace orogen {
@@ -94,17 +96,9 @@ std::vector<double> PackingExperiment::measure(const World& w) const {
           mean_kinetic_energy(w), stats.contacts_per_disc, stats.max_overlap, n ? sum / n : 0.0};
 }
 
-void PackingExperiment::save(ArchiveWriter& out) const {
-  out.put_scalar("packing.phase", phase_);
-  out.put_scalar("packing.phase_start_time", phase_start_time_);
-  out.put_scalar("packing.mu", mu_);
-}
+void PackingExperiment::save(ArchiveWriter& out) const { state_fields(*this, ArchiveSaver(out)); }
 
-void PackingExperiment::load(const ArchiveReader& in) {
-  phase_ = in.get_scalar<int>("packing.phase");
-  phase_start_time_ = in.get_scalar<double>("packing.phase_start_time");
-  mu_ = in.get_scalar<double>("packing.mu");
-}
+void PackingExperiment::load(const ArchiveReader& in) { state_fields(*this, ArchiveLoader(in)); }
 
 void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {
   // packing.h5: one snapshot of the settled layer plus what later runs need to know.
@@ -163,6 +157,12 @@ std::string PackingExperiment::status(const World& w) const {
 
 std::array<double, 4> PackingExperiment::view_box(const World&) const {
   return {-1.0, packing_.length + 1.0, -1.0, 1.6 * packing_.thickness + 2.0};
+}
+
+std::unique_ptr<Experiment> make_packing_experiment(const Config& c) {
+  check_material_size(c, c.get_float("layer.length"), c.get_float("layer.thickness"),
+                      {"layer.length", "layer.thickness"});
+  return std::make_unique<PackingExperiment>(packing_spec(c), settle_spec(c), c.to_toml());
 }
 
 }  // namespace orogen

@@ -3,6 +3,7 @@
 // under gravity, are trimmed to the target thickness and settle again. The result, with each
 // particle's settled position and initial depth, is written to packing.h5 for later runs.
 #include "experiments/experiment.hpp"
+#include "io/archive_fields.hpp"
 #include "packing/packing.hpp"
 
 namespace orogen {
@@ -47,10 +48,22 @@ class PackingExperiment final : public Experiment {
   PackingSpec packing_;
   SettleSpec settle_;
   std::string config_toml_;
+  // The checkpointed state, each field once with its key, for save() and load()
+  // (io/archive_fields.hpp).
+  template <class Self, class F>
+  static void state_fields(Self& self, F&& f) {
+    f("packing.phase", self.phase_);
+    f("packing.phase_start_time", self.phase_start_time_);
+    f("packing.mu", self.mu_);
+  }
+
   int phase_ = Falling;
   double mu_ = 0.3;  // the material's friction (contact.mu), restored for the relax phase
   double phase_start_time_ = 0;
   std::uint64_t check_every_ = 200;  // steps between rest checks
 };
+
+// The packing experiment from the [layer], [particles] and [settle] keys.
+std::unique_ptr<Experiment> make_packing_experiment(const Config& config);
 
 }  // namespace orogen

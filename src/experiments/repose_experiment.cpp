@@ -157,20 +157,12 @@ void ReposeExperiment::finish(World& w, const std::filesystem::path& out_dir) {
 }
 
 void ReposeExperiment::save(ArchiveWriter& out) const {
-  out.put_scalar("repose.top", top_);
-  out.put_scalar("repose.base", base_);
-  out.put_scalar("repose.rest_time", rest_time_);
-  out.put_scalar<std::uint8_t>("repose.at_rest", at_rest_ ? 1 : 0);
-  out.put_scalar("repose.initial_discs", initial_discs_);
+  state_fields(*this, ArchiveSaver(out));
   displacements_.save(out, "repose");
 }
 
 void ReposeExperiment::load(const ArchiveReader& in) {
-  top_ = in.get_scalar<double>("repose.top");
-  base_ = in.get_scalar<double>("repose.base");
-  rest_time_ = in.get_scalar<double>("repose.rest_time");
-  at_rest_ = in.get_scalar<std::uint8_t>("repose.at_rest") != 0;
-  initial_discs_ = in.get_scalar<std::int64_t>("repose.initial_discs");
+  state_fields(*this, ArchiveLoader(in));
   displacements_.load(in, "repose");
 }
 
@@ -222,9 +214,7 @@ std::unique_ptr<Experiment> make_repose_experiment(const Config& c) {
   s.ke_threshold = c.get_float("repose.ke_threshold");
   s.min_time = c.get_float("repose.min_time");
   s.max_time = c.get_float("repose.max_time");
-  s.column_width_factor = c.get_float("layer.column_width_factor");
-  s.packing = packing_spec(c);
-  s.settle = settle_spec(c);
+  read_layer_keys(c, s);
   if (s.max_time <= s.min_time)
     throw config_error(c.sources_of({"repose.max_time", "repose.min_time"}), "repose.max_time",
                        fmt::format("{}", s.max_time),

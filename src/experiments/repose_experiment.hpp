@@ -11,6 +11,7 @@
 #include "analysis/displacement_tracker.hpp"
 #include "analysis/profile_fit.hpp"
 #include "experiments/experiment.hpp"
+#include "io/archive_fields.hpp"
 #include "experiments/packing_experiment.hpp"
 
 namespace orogen {
@@ -62,6 +63,17 @@ class ReposeExperiment final : public Experiment {
   void remove_escaped(World& world);
 
   ReposeSpec spec_;
+  // The checkpointed state, each field once with its key, for save() and load()
+  // (io/archive_fields.hpp).
+  template <class Self, class F>
+  static void state_fields(Self& self, F&& f) {
+    f("repose.top", self.top_);
+    f("repose.base", self.base_);
+    f("repose.rest_time", self.rest_time_);
+    f("repose.at_rest", self.at_rest_);
+    f("repose.initial_discs", self.initial_discs_);
+  }
+
   double top_ = 0;       // mean surface height of the settled block
   double base_ = 0;      // height below which the profile is not fitted (fixed layer or lip)
   double rest_time_ = -1;

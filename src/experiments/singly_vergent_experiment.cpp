@@ -157,16 +157,12 @@ std::vector<SummaryValue> SinglyVergentExperiment::summary(const World& w) const
 }
 
 void SinglyVergentExperiment::save(ArchiveWriter& out) const {
-  out.put_scalar("singly.initial_discs", initial_discs_);
-  out.put("singly.history_s", history_s_);
-  out.put("singly.history_taper", history_taper_);
+  state_fields(*this, ArchiveSaver(out));
   displacements_.save(out, "singly");
 }
 
 void SinglyVergentExperiment::load(const ArchiveReader& in) {
-  initial_discs_ = in.get_scalar<std::int64_t>("singly.initial_discs");
-  in.get("singly.history_s", history_s_);
-  in.get("singly.history_taper", history_taper_);
+  state_fields(*this, ArchiveLoader(in));
   displacements_.load(in, "singly");
 }
 
@@ -189,9 +185,7 @@ std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& c) {
   s.shortening = c.get_float("singly.shortening");
   s.outputs = c.get_int32("singly.outputs");
   s.steady_from = c.get_float("singly.steady_from");
-  s.column_width_factor = c.get_float("layer.column_width_factor");
-  s.packing = packing_spec(c);
-  s.settle = settle_spec(c);
+  read_layer_keys(c, s);
   check_material_size(c, s.length, s.h0, {"layer.length", "layer.thickness"});
   if (s.shortening * s.h0 > 0.8 * s.length)
     throw config_error(c.sources_of({"singly.shortening", "layer.length", "layer.thickness"}), "singly.shortening",

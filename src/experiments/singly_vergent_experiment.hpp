@@ -7,6 +7,7 @@
 #include "analysis/displacement_tracker.hpp"
 #include "analysis/profile_fit.hpp"
 #include "experiments/experiment.hpp"
+#include "io/archive_fields.hpp"
 #include "experiments/packing_experiment.hpp"
 
 namespace orogen {
@@ -65,6 +66,15 @@ class SinglyVergentExperiment final : public Experiment {
 
  private:
   SinglyVergentSpec spec_;
+  // The checkpointed state, each field once with its key, for save() and load()
+  // (io/archive_fields.hpp).
+  template <class Self, class F>
+  static void state_fields(Self& self, F&& f) {
+    f("singly.initial_discs", self.initial_discs_);
+    f("singly.history_s", self.history_s_);
+    f("singly.history_taper", self.history_taper_);
+  }
+
   std::int64_t initial_discs_ = 0;
   // Shortening and taper at each output, for the steady-state statistics of the summary.
   std::vector<double> history_s_, history_taper_;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "config/config.hpp"
+#include "experiments/time_step_config.hpp"
 #include "world/world.hpp"
 
 namespace orogen {
@@ -67,13 +68,10 @@ SettleSpec settle_spec(const Config& c) {
 
 std::string imposed_speed_excess(const Config& c, const std::string& key) {
   const double v = c.get_float(key);
-  const double kn = c.get_float("contact.kn");
-  const double d_min = c.get_float("particles.d_min");
-  const double m_min = std::numbers::pi * 0.25 * d_min * d_min;
-  const double limit = stable_time_step(kn, 0.5 * m_min);
-  const double dt = c.get_float("time.dt") > 0 ? c.get_float("time.dt") : c.get_float("time.dt_fraction") * limit;
-  const double overlap = m_min / kn;
-  if (dt > limit) return {};  // apply_engine_config refuses the time step itself
+  const ConfigTimeStep step = config_time_step(c);
+  const double dt = step.dt;
+  const double overlap = step.m_min / c.get_float("contact.kn");
+  if (dt > step.limit) return {};  // apply_engine_config refuses the time step itself
   if (v * dt < overlap) return {};
   const std::vector<std::string_view> keys = {key, "contact.kn", "particles.d_min", "time.dt", "time.dt_fraction"};
   return fmt::format("the boundary would move {:.3g} d per step, more than the gravitational contact "

@@ -14,6 +14,15 @@ class Config;
 PackingSpec packing_spec(const Config& config);
 SettleSpec settle_spec(const Config& config);
 
+// The keys every experiment that settles a layer reads the same way: its spec's packing and
+// settle parts and, where the spec has one, its surface column width.
+template <class Spec>
+void read_layer_keys(const Config& config, Spec& spec) {
+  spec.packing = packing_spec(config);
+  spec.settle = settle_spec(config);
+  if constexpr (requires { spec.column_width_factor; }) spec.column_width_factor = spec.settle.column_width_factor;
+}
+
 // Refuses (ConfigError) material of length x thickness [d] whose estimated disc count, or whose
 // number of surface columns, is above kMaxParticles (or not finite), before anything is
 // allocated; the message names size_keys (the keys the size comes from) and the disc sizes.

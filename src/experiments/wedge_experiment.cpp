@@ -21,14 +21,23 @@ constexpr std::string_view kPinHook = "wedge.pin_retro_base";
 
 }  // namespace
 
+std::string WedgeExperiment::tile_problem(const Tile& tile, double h0) {
+  const double needed = h0 + 2 * tile_margin_for(h0);
+  if (std::fabs(tile.thickness - h0) > 1e-9 * h0)
+    return fmt::format("a packing as thick as layer.thickness = {} (this one is {} thick: set layer.thickness = {})",
+                       h0, tile.thickness, tile.thickness);
+  if (tile.length < needed)
+    return fmt::format("a packing at least {} d long for layer.thickness = {} (this one is {} d)", needed, h0,
+                       tile.length);
+  return {};
+}
+
 void WedgeExperiment::setup(World& w) {
   if (!spec_.packing_file.empty()) {
     const Tile whole = load_tile(spec_.packing_file);
-    const double length = whole.length - 2 * tile_margin();
-    if (length < spec_.h0)
-      throw std::runtime_error(spec_.packing_file + " is too short for a tile: it needs a length of at least h0 + " +
-                               std::to_string(2 * tile_margin()));
-    tile_ = cut_tile(whole, tile_margin(), length);
+    if (const std::string problem = tile_problem(whole, spec_.h0); !problem.empty())
+      throw std::runtime_error(spec_.packing_file + ": wedge.packing_file must be " + problem);
+    tile_ = cut_tile(whole, tile_margin(), whole.length - 2 * tile_margin());
   } else {
     // Settle the tile in a world of its own with the same engine settings.
     World box;
@@ -256,26 +265,14 @@ std::vector<SummaryValue> WedgeExperiment::summary(const World&) const { return 
 
 void WedgeExperiment::save(ArchiveWriter& out) const {
   save_tile(out, tile_);
-  out.put_scalar("wedge.t_start", t_start_);
-  out.put_scalar("wedge.slab_left", slab_left_);
-  out.put_scalar("wedge.window_pro", window_pro_);
-  out.put_scalar("wedge.window_retro", window_retro_);
-  out.put_scalar("wedge.x_end", x_end_);
-  out.put_scalar("wedge.entered", entered_);
-  out.put("wedge.pinned", pinned_);
+  state_fields(*this, ArchiveSaver(out));
   displacements_.save(out, "wedge");
   history_.save(out, "wedge");
 }
 
 void WedgeExperiment::load(const ArchiveReader& in) {
   tile_ = read_tile(in);
-  t_start_ = in.get_scalar<double>("wedge.t_start");
-  slab_left_ = in.get_scalar<double>("wedge.slab_left");
-  window_pro_ = in.get_scalar<double>("wedge.window_pro");
-  window_retro_ = in.get_scalar<double>("wedge.window_retro");
-  x_end_ = in.get_scalar<double>("wedge.x_end");
-  entered_ = in.get_scalar<std::int64_t>("wedge.entered");
-  in.get("wedge.pinned", pinned_);
+  state_fields(*this, ArchiveLoader(in));
   displacements_.load(in, "wedge");
   history_.load(in, "wedge");
 }

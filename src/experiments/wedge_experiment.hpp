@@ -12,6 +12,7 @@
 #include "analysis/displacement_tracker.hpp"
 #include "analysis/surface.hpp"
 #include "experiments/wedge_summary.hpp"
+#include "io/archive_fields.hpp"
 #include "packing/tile.hpp"
 
 namespace orogen {
@@ -84,6 +85,22 @@ class WedgeExperiment final : public Experiment {
 
  public:
   static double tile_margin_for(double h0) { return 0.5 * h0 + 2.0; }
+  // The checkpointed scalars and arrays, each once with its key, for save() and load()
+  // (io/archive_fields.hpp); the tile, the displacements and the history save themselves.
+  template <class Self, class F>
+  static void state_fields(Self& self, F&& f) {
+    f("wedge.t_start", self.t_start_);
+    f("wedge.slab_left", self.slab_left_);
+    f("wedge.window_pro", self.window_pro_);
+    f("wedge.window_retro", self.window_retro_);
+    f("wedge.x_end", self.x_end_);
+    f("wedge.entered", self.entered_);
+    f("wedge.pinned", self.pinned_);
+  }
+  // Why a settled packing cannot give this wedge its tiles (not h0 thick, or too short for a
+  // tile of at least h0 between its margins), or empty if it can: the factory's configuration
+  // check and setup() ask this one function.
+  static std::string tile_problem(const Tile& tile, double h0);
 
   WedgeSpec spec_;
   Tile tile_;
@@ -97,5 +114,9 @@ class WedgeExperiment final : public Experiment {
   DisplacementTracker displacements_;  // for the per-output displacement fields
   WedgeHistory history_;               // the shape at each output, for summary.csv
 };
+
+// The wedge from the [wedge], [layer], [particles] and [settle] keys (wedge_from_config.cpp);
+// checks across keys throw ConfigError.
+std::unique_ptr<Experiment> make_wedge_experiment(const Config& config);
 
 }  // namespace orogen

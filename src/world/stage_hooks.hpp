@@ -25,6 +25,20 @@ class StageHooks {
  public:
   using Hook = std::function<void(World&)>;
 
+  // A copy of a world starts with no hooks. Hooks belong to the experiment attached to the
+  // original and act on its state (the wedge's hook records the ids it pins in the
+  // experiment): a copy stepped with them would change the original's experiment. To step a
+  // copy with hooks, attach an experiment to it (Experiment::attach). Moves keep the hooks.
+  StageHooks() = default;
+  StageHooks(const StageHooks&) {}
+  StageHooks& operator=(const StageHooks&) {
+    lists_ = {};
+    return *this;
+  }
+  StageHooks(StageHooks&&) = default;
+  StageHooks& operator=(StageHooks&&) = default;
+  ~StageHooks() = default;
+
   // Adds `hook` at the end of `stage`'s list; a hook of the same name (at any stage) is
   // replaced, so that attaching an experiment twice runs its hooks once.
   void add(Stage stage, std::string name, Hook hook);

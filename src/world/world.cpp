@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "boundary/wall_forces.hpp"
+#include "world/contact_rebuild.hpp"
 
 namespace orogen {
 namespace {
@@ -66,10 +67,9 @@ void check_build(const BuildStats& s, const World& w) {
 }  // namespace
 
 void World::advance() {
-  const bool list_matches = neighbors.valid && neighbors.x_ref.size() == discs.size();
-  if (!list_matches || moved + wall_displacement(neighbors, walls) > 0.5 * neighbors.skin) {
+  if (contacts_stale()) {
     const bool sort = sort_every > 0 && neighbors.builds % static_cast<std::uint64_t>(sort_every) == 0;
-    check_build(build_neighbor_list(neighbors, discs, clusters, walls, law, dt, sort), *this);
+    check_build(rebuild_contacts(sort), *this);
   }
   step_stages();
   hooks.run(Stage::AfterIntegration, *this);
@@ -104,8 +104,8 @@ void World::step_stages(const ThreadSplit* given) {
     }
     const ThreadSplit& split = use_given ? *given : cut;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    pair_forces_share(neighbors, discs, law, dt, forces, split, t);
-    wall_forces_share(neighbors, discs, walls, law, dt, forces, split, t);
+    pair_forces_share(neighbors, contacts.pairs, discs, law, dt, forces, split, t);
+    wall_forces_share(contacts.walls, discs, walls, law, dt, forces, split, t);
     // A body's members may lie in the next thread's stretch: their forces must be whole before
     // it gathers them, and their wall contacts read before it moves them.
 #pragma omp barrier
@@ -126,6 +126,12 @@ void World::step_stages(const ThreadSplit* given) {
   }
   if (hook_error) std::rethrow_exception(hook_error);
   moved = Displacement{max2, not_finite}.distance();
+}
+
+bool World::contacts_stale() const { return orogen::contacts_stale(neighbors, discs, walls, moved); }
+
+BuildStats World::rebuild_contacts(bool sort) {
+  return orogen::rebuild_contacts(neighbors, contacts, discs, clusters, walls, law, dt, sort);
 }
 
 std::size_t World::remove(std::span<const std::uint8_t> flags, RemovalReason reason) {
@@ -179,8 +185,8 @@ std::size_t World::add_cluster(std::span<const std::size_t> idx) {
 double World::min_pair_mass() const {
   double m_min = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < discs.size(); ++i) m_min = std::min(m_min, discs.mass[i]);
-  if (!std::isfinite(m_min)) m_min = std::numbers::pi * 0.35 * 0.35;
-  return 0.5 * m_min;
+  return 0.5 * m_min;  // infinite without discs: no contact, no limit (a configuration's own
+                       // limit, for discs yet to come, is experiments/time_step_config.cpp's)
 }
 
 double stable_time_step(double kn, double min_pair_mass) {

@@ -18,8 +18,10 @@
 
 #include "boundary/wall.hpp"
 #include "contact/contact_law.hpp"
+#include "contact/contact_store.hpp"
 #include "contact/neighbor_list.hpp"
 #include "contact/pair_forces.hpp"
+#include "contact/pair_search.hpp"
 #include "integrate/integrator.hpp"
 #include "particles/clusters.hpp"
 #include "particles/discs.hpp"
@@ -43,13 +45,6 @@ struct RemovalRecord {
   RemovalReason reason = RemovalReason::Other;
 };
 
-// Touching contacts of one wall in the last force pass, and how many of them slid (at the
-// Coulomb limit).
-struct WallContactStats {
-  std::size_t touching = 0, at_limit = 0;
-  double slip_fraction() const { return touching ? static_cast<double>(at_limit) / static_cast<double>(touching) : 0.0; }
-};
-
 // Largest stable time step for normal stiffness kn and the smallest effective pair mass:
 // 0.1 * 2 pi sqrt(m_eff / kn) (MODEL §3, thesis 2.7).
 double stable_time_step(double kn, double min_pair_mass);
@@ -60,7 +55,8 @@ struct World {
   std::vector<Wall> walls;
   ContactLaw law;
   BodyForce body;
-  NeighborList neighbors;
+  NeighborList neighbors;  // candidate pairs and the rebuild test
+  ContactStore contacts;   // the state of each contact (histories, dashpots, wall flags)
   PairScratch scratch;
   double moved = 0;  // largest disc displacement since the last list build (from integration)
   double dt = 1e-3;
@@ -94,6 +90,12 @@ struct World {
 
   // Makes the given discs one rigid cluster.
   std::size_t add_cluster(std::span<const std::size_t> disc_indices);
+
+  // Whether the next step rebuilds the list (stale, or moved more than half the skin).
+  bool contacts_stale() const;
+  // Rebuilds the list and the contact store now (world/contact_rebuild.hpp); advance() does
+  // it when contacts_stale(). Tests and analyses call it to get a current list.
+  BuildStats rebuild_contacts(bool sort);
 
   // Marks that the neighbour list must be rebuilt. The methods below call it where they must;
   // a caller needs it only after changing the members directly.
@@ -131,18 +133,26 @@ struct World {
     invalidate_neighbors();
   }
 
-  // --- Wall contacts of the last force pass (world_changes.cpp) ---
-  WallContactStats wall_contact_stats(std::size_t wall) const;
+  // --- Reading the contacts (contact/contact_store.hpp); disc indices are those of the last
+  // force pass: read before discs are removed or added. ---
+  WallContactStats wall_contact_stats(std::size_t wall) const { return orogen::wall_contact_stats(contacts, wall); }
   // Calls f(disc index) for each disc that touched wall `wall` in the last force pass, in list
-  // order. Disc indices are those of the pass: call it before discs are removed or added.
+  // order.
   template <class F>
   void for_each_touching(std::size_t wall, F&& f) const {
-    const auto& wc = neighbors.walls;
-    for (std::size_t k = 0; k < wc.size(); ++k)
-      if (wc.wall[k] == wall && wc.touching[k]) f(static_cast<std::size_t>(wc.disc[k]));
+    orogen::for_each_wall_contact(contacts, [&](const WallContactView& c) {
+      if (c.wall == wall && c.touching) f(static_cast<std::size_t>(c.disc));
+    });
   }
+  // Whether the list was built for the discs there now (none added or removed since).
+  bool contacts_listed_for_discs() const { return neighbors.x_ref.size() == discs.size(); }
+  // Calls f(PairContactView) for each candidate pair, f(WallContactView) for each wall contact.
+  template <class F>
+  void for_each_pair_contact(F&& f) const { orogen::for_each_pair_contact(neighbors, contacts, f); }
+  template <class F>
+  void for_each_wall_contact(F&& f) const { orogen::for_each_wall_contact(contacts, f); }
 
-  // Smallest effective mass of a contact pair, for the stability limit.
+  // Smallest effective mass of a contact pair, for the stability limit (infinite without discs).
   double min_pair_mass() const;
   // Largest stable time step for the current stiffness and masses (MODEL §3, §2.7).
   double stable_dt() const;

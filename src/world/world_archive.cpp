@@ -7,6 +7,21 @@ namespace {
 
 std::string key(std::string_view prefix, std::string_view name) { return std::string(prefix) + "." + std::string(name); }
 
+// Calls f(name, vector&) for every array of the candidate list and the contact store, under
+// the keys and in the order of the checkpoint format (written when the store was part of the
+// list, "nl." + name): one list for save and load, so neither misses an array.
+template <class F>
+void for_each_contact_array(NeighborList& L, ContactStore& s, F&& f) {
+  f("first", L.first); f("second", L.second); f("xi", s.pairs.xi); f("gamma_n", s.pairs.gamma_n);
+  f("id_first", s.pairs.id_first); f("id_second", s.pairs.id_second); f("chunk_start", L.chunk_start);
+  f("walls.wall", s.walls.wall); f("walls.disc", s.walls.disc); f("walls.xi", s.walls.xi);
+  f("walls.gamma_n", s.walls.gamma_n); f("walls.mass", s.walls.mass); f("walls.touching", s.walls.touching);
+  f("walls.at_limit", s.walls.at_limit); f("wall_disc_id", s.walls.disc_id);
+  f("x_ref", L.x_ref); f("y_ref", L.y_ref);
+  f("wall_ax_ref", L.wall_ax_ref); f("wall_ay_ref", L.wall_ay_ref);
+  f("wall_bx_ref", L.wall_bx_ref); f("wall_by_ref", L.wall_by_ref);
+}
+
 }  // namespace
 
 void save_world(ArchiveWriter& out, World& w) {
@@ -27,7 +42,7 @@ void save_world(ArchiveWriter& out, World& w) {
   out.put_string("walls.names", wall_names);
 
   auto& L = w.neighbors;
-  L.for_each_array([&](std::string_view name, auto& v) { out.put(key("nl", name), v); });
+  for_each_contact_array(L, w.contacts, [&](std::string_view name, auto& v) { out.put(key("nl", name), v); });
   out.put_scalar("nl.builds", L.builds);
   out.put_scalar<std::uint8_t>("nl.valid", L.valid ? 1 : 0);
   out.put_scalar("nl.skin", L.skin);
@@ -81,7 +96,7 @@ void load_world(const ArchiveReader& in, World& w) {
   }
 
   auto& L = w.neighbors;
-  L.for_each_array([&](std::string_view name, auto& v) { in.get(key("nl", name), v); });
+  for_each_contact_array(L, w.contacts, [&](std::string_view name, auto& v) { in.get(key("nl", name), v); });
   L.builds = in.get_scalar<std::uint64_t>("nl.builds");
   L.valid = in.get_scalar<std::uint8_t>("nl.valid") != 0;
   L.skin = in.get_scalar<double>("nl.skin");

@@ -51,15 +51,4 @@ void World::enable_wall(std::string_view name, bool enabled) {
   invalidate_neighbors();
 }
 
-WallContactStats World::wall_contact_stats(std::size_t wall) const {
-  WallContactStats s;
-  const auto& wc = neighbors.walls;
-  for (std::size_t k = 0; k < wc.size(); ++k) {
-    if (wc.wall[k] != wall || !wc.touching[k]) continue;
-    ++s.touching;
-    s.at_limit += wc.at_limit[k];
-  }
-  return s;
-}
-
 }  // namespace orogen

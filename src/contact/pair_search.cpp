@@ -1,0 +1,87 @@
+#include "contact/pair_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "util/parallel.hpp"
+
+namespace orogen {
+
+PairSearchResult search_pairs(NeighborList& L, const CellBins& bins, const Discs& d) {
+  const CellGrid& g = bins.grid;
+  const auto& order = bins.order;
+  const auto& cell_start = bins.cell_start;
+  // Each cell against itself and its four forward neighbours in traversal order: (u, v+1) in
+  // its own stripe and (u+1, v-1), (u+1, v), (u+1, v+1) in the next. Chunks of whole stripes,
+  // at most kMaxChunks of them: a number fixed by the geometry alone, so that the order of the
+  // force sums never depends on the thread count. Chunks are searched in parallel into lists
+  // of their own, joined in chunk order.
+  constexpr std::int64_t kMaxChunks = 64;
+  PairSearchResult result;
+  const std::int64_t stripes_per_chunk = (g.nu() + kMaxChunks - 1) / kMaxChunks;
+  const std::int64_t chunks = (g.nu() + stripes_per_chunk - 1) / stripes_per_chunk;
+  result.stripes_per_chunk = stripes_per_chunk;
+  struct ChunkPairs {
+    std::vector<std::uint32_t> first, second;
+    BuildStats stats;
+    std::size_t touching = 0;
+  };
+  std::vector<ChunkPairs> found(static_cast<std::size_t>(chunks));
+  const std::int64_t neighbours[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};  // (du, dv)
+  const double skin = L.skin;
+#pragma omp parallel for schedule(dynamic, 1) if (static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items())
+  for (std::int64_t k = 0; k < chunks; ++k) {
+    ChunkPairs& out = found[static_cast<std::size_t>(k)];
+    auto consider = [&](std::uint32_t a, std::uint32_t b) {
+      if (d.cluster_id[a] >= 0 && d.cluster_id[a] == d.cluster_id[b]) return;
+      if (!d.is_dynamic(a) && !d.is_dynamic(b)) return;
+      const double dx = d.x[b] - d.x[a], dy = d.y[b] - d.y[a];
+      const double reach = d.radius[a] + d.radius[b] + skin;
+      const double dist2 = dx * dx + dy * dy;
+      if (dist2 >= reach * reach) return;
+      const double overlap = d.radius[a] + d.radius[b] - std::sqrt(dist2);
+      out.touching += overlap > 0;
+      const double ratio = overlap / std::min(d.radius[a], d.radius[b]);
+      if (ratio > out.stats.max_overlap_ratio) {
+        out.stats.max_overlap_ratio = ratio; out.stats.worst_a = a; out.stats.worst_b = b;
+      }
+      if (d.id[a] > d.id[b]) std::swap(a, b);
+      out.first.push_back(a);
+      out.second.push_back(b);
+    };
+    const std::int64_t u_end = std::min(g.nu(), (k + 1) * stripes_per_chunk);
+    for (std::int64_t u = k * stripes_per_chunk; u < u_end; ++u) {
+      for (std::int64_t v = 0; v < g.nv(); ++v) {
+        const auto cell = static_cast<std::size_t>(u * g.nv() + v);
+        for (auto s = cell_start[cell]; s < cell_start[cell + 1]; ++s) {
+          const auto a = order[s];
+          for (auto t = s + 1; t < cell_start[cell + 1]; ++t) consider(a, order[t]);
+          for (const auto& nb : neighbours) {
+            const std::int64_t ou = u + nb[0], ov = v + nb[1];
+            if (ov < 0 || ov >= g.nv() || ou >= g.nu()) continue;
+            const auto other = static_cast<std::size_t>(ou * g.nv() + ov);
+            for (auto t = cell_start[other]; t < cell_start[other + 1]; ++t) consider(a, order[t]);
+          }
+        }
+      }
+    }
+  }
+  L.first.clear(); L.second.clear();
+  L.chunk_start.clear();
+  for (const auto& f : found) {
+    L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
+    L.first.insert(L.first.end(), f.first.begin(), f.first.end());
+    L.second.insert(L.second.end(), f.second.begin(), f.second.end());
+    result.touching.push_back(f.touching);
+    if (f.stats.max_overlap_ratio > result.stats.max_overlap_ratio) {
+      result.stats.max_overlap_ratio = f.stats.max_overlap_ratio;
+      result.stats.worst_a = f.stats.worst_a;
+      result.stats.worst_b = f.stats.worst_b;
+    }
+  }
+  L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
+  return result;
+}
+
+}  // namespace orogen

@@ -1,0 +1,33 @@
+#pragma once
+// The pair search: lists the candidate pairs (discs closer than the sum of their radii plus
+// the skin) from the cell bins, stripe chunk by stripe chunk. It lists candidates only; their
+// state (history, dashpot) is the contact store's, filled by the list build after it.
+#include <cstdint>
+#include <vector>
+
+#include "contact/cell_grid.hpp"
+#include "contact/neighbor_list.hpp"
+#include "particles/discs.hpp"
+
+namespace orogen {
+
+// What a list build tells its caller: whether the positions were finite, and the worst
+// overlap (the sign of a blow-up).
+struct BuildStats {
+  double max_overlap_ratio = 0;  // largest overlap divided by the smaller radius
+  std::uint32_t worst_a = 0, worst_b = 0;
+  bool finite = true;
+};
+
+// What the search saw besides the pairs: per chunk how many touched (for the dense-chunk
+// hint), how many stripes make a chunk, and the worst overlap.
+struct PairSearchResult {
+  std::vector<std::size_t> touching;
+  std::int64_t stripes_per_chunk = 1;
+  BuildStats stats;
+};
+
+// Sets list.first, second (the lower stable id first) and chunk_start from the bins.
+PairSearchResult search_pairs(NeighborList& list, const CellBins& bins, const Discs& discs);
+
+}  // namespace orogen

@@ -1,0 +1,48 @@
+#include "contact/store_carry.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "util/parallel.hpp"
+
+namespace orogen {
+
+std::int64_t max_stored_id(const ContactStore& s) {
+  std::int64_t max_id = 0;
+  for (auto id : s.pairs.id_first) max_id = std::max(max_id, id);
+  for (auto id : s.walls.disc_id) max_id = std::max(max_id, id);
+  return max_id;
+}
+
+HistoryCarry index_pair_history(const PairContacts& pairs, std::int64_t max_id) {
+  HistoryCarry h;
+  h.index(pairs.id_first, pairs.id_second, pairs.xi, max_id);
+  return h;
+}
+
+HistoryCarry index_wall_history(const WallContacts& walls, std::int64_t max_id) {
+  HistoryCarry h;
+  const std::vector<std::int64_t> wall_key(walls.wall.begin(), walls.wall.end());
+  h.index(walls.disc_id, wall_key, walls.xi, max_id);
+  return h;
+}
+
+void carry_pair_history(PairContacts& pairs, const NeighborList& L, const Discs& d, const HistoryCarry& old) {
+  const auto n = static_cast<std::ptrdiff_t>(L.size());
+  pairs.id_first.resize(L.size());
+  pairs.id_second.resize(L.size());
+  pairs.xi.resize(L.size());
+#pragma omp parallel for schedule(static) if (static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items())
+  for (std::ptrdiff_t p = 0; p < n; ++p) {
+    pairs.id_first[p] = d.id[L.first[p]];
+    pairs.id_second[p] = d.id[L.second[p]];
+    pairs.xi[p] = old.find(pairs.id_first[p], pairs.id_second[p]);
+  }
+}
+
+void carry_wall_history(WallContacts& wc, const HistoryCarry& old) {
+  wc.xi.resize(wc.size());
+  for (std::size_t k = 0; k < wc.size(); ++k) wc.xi[k] = old.find(wc.disc_id[k], static_cast<std::int64_t>(wc.wall[k]));
+}
+
+}  // namespace orogen

@@ -1,0 +1,52 @@
+#include "world/contact_rebuild.hpp"
+
+#include <algorithm>
+
+#include "boundary/wall_contact_search.hpp"
+#include "contact/cell_grid.hpp"
+#include "contact/chunk_hints.hpp"
+#include "contact/contact_damping.hpp"
+#include "contact/disc_scan.hpp"
+#include "contact/store_carry.hpp"
+#include "world/reference_positions.hpp"
+
+namespace orogen {
+
+BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clusters& c,
+                            const std::vector<Wall>& walls, const ContactLaw& law, double dt, bool sort) {
+  const DiscScan scan = scan_discs(d);
+  if (!scan.finite) {
+    BuildStats stats;
+    stats.finite = false;
+    return stats;
+  }
+  // Index the old histories by stable ids before indices change.
+  const std::int64_t max_id = std::max(scan.max_id, max_stored_id(store));
+  const HistoryCarry pair_history = index_pair_history(store.pairs, max_id);
+  const HistoryCarry wall_history = index_wall_history(store.walls, max_id);
+
+  CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan.r_max + L.skin));
+  if (sort) sort_discs_by_cell(bins, d, c);
+
+  const PairSearchResult search = search_pairs(L, bins, d);
+  carry_pair_history(store.pairs, L, d, pair_history);
+  prepare_damping(law, d, c, dt);  // the damping table is filled serially, read in parallel
+  set_pair_damping(store.pairs, L, d, c, law, dt);
+  set_chunk_hints(L, search, bins, sort);
+
+  search_wall_contacts(store.walls, d, walls, L.skin);
+  carry_wall_history(store.walls, wall_history);
+  set_wall_damping(store.walls, d, c, law, dt);
+
+  record_reference_positions(L, d, walls);
+  ++L.builds;
+  L.valid = true;
+  return search.stats;
+}
+
+bool contacts_stale(const NeighborList& L, const Discs& d, const std::vector<Wall>& walls, double moved) {
+  const bool list_matches = L.valid && L.x_ref.size() == d.size();
+  return !list_matches || moved + wall_displacement(L, walls) > 0.5 * L.skin;
+}
+
+}  // namespace orogen

@@ -1,0 +1,27 @@
+#pragma once
+// A list build: the neighbour search lists candidates (pairs, wall contacts), then the
+// contact store is set for them. Each step is a function of its own; this file only runs
+// them in order (the order of a build is part of the bitwise results).
+#include <vector>
+
+#include "boundary/wall.hpp"
+#include "contact/contact_law.hpp"
+#include "contact/contact_store.hpp"
+#include "contact/neighbor_list.hpp"
+#include "contact/pair_search.hpp"
+#include "particles/clusters.hpp"
+#include "particles/discs.hpp"
+
+namespace orogen {
+
+// Re-orders discs in cell order (if `sort`), lists the candidate pairs and wall contacts,
+// carries the contact histories over by stable ids, sets each contact's dashpot and records
+// the reference positions. With a non-finite position it stops at once and changes nothing.
+BuildStats rebuild_contacts(NeighborList& list, ContactStore& store, Discs& discs, Clusters& clusters,
+                            const std::vector<Wall>& walls, const ContactLaw& law, double dt, bool sort);
+
+// Whether the next step must rebuild: the list is stale, or some disc (displacement `moved`,
+// from integration) plus the walls moved more than half the skin since the last build.
+bool contacts_stale(const NeighborList& list, const Discs& discs, const std::vector<Wall>& walls, double moved);
+
+}  // namespace orogen
