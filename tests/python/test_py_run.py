@@ -90,3 +90,30 @@ def test_cli_tools_read_a_python_run(tmp_path):
     subprocess.run([BINARY, "export", str(out), "--format", "csv", "--to", str(tmp_path / "o.csv")], check=True,
                    capture_output=True)
     assert orogen.open_run(out).analysis is not None
+
+
+def test_a_changing_hook_resumes_bit_for_bit(tmp_path):
+    """A rule that changes the world (a wall's velocity, by step number): stopped and resumed
+    with the same hook, the run ends with the bits of the run that went through."""
+    def pulses(world):
+        world.set_wall_velocity("retro_end", 0.0 if (world.step // 2000) % 2 else 0.01, 0.0)
+
+    def stop_at(step):
+        def hook(world):
+            pulses(world)
+            return world.step == step
+        return hook
+
+    whole, parts = tmp_path / "whole", tmp_path / "parts"
+    assert orogen.run(TINY_WEDGE, out=whole, hook=pulses, every=50) == orogen.FINISHED
+    assert orogen.run(TINY_WEDGE, out=parts, hook=stop_at(4000), every=50) == orogen.STOPPED
+    assert orogen.resume(parts, hook=pulses, every=50) == orogen.FINISHED
+    assert_same_bits(whole, parts)
+    walls = orogen.open_run(whole).snapshots["walls"].values
+    assert not np.array_equal(walls[0], walls[-1])  # the hook did move the wall
+
+
+def test_two_threads_same_bits(cli_wedge, tmp_path):
+    """threads= reaches the engine; a tiny wedge stays below the parallel loops (2048 discs)."""
+    orogen.run(TINY_WEDGE, out=tmp_path / "t2", threads=2, hook=lambda w: None, every=100)
+    assert_same_bits(cli_wedge, tmp_path / "t2")
