@@ -87,6 +87,8 @@ def test_cli_tools_read_a_python_run(tmp_path):
     out = tmp_path / "py"
     orogen.run(TINY_WEDGE, out=out)
     subprocess.run([BINARY, "analyze", str(out)], check=True, capture_output=True)
+    subprocess.run([BINARY, "render", str(out)], check=True, capture_output=True)
+    assert len(list((out / "frames").glob("*.png"))) == 5
     subprocess.run([BINARY, "export", str(out), "--format", "csv", "--to", str(tmp_path / "o.csv")], check=True,
                    capture_output=True)
     assert orogen.open_run(out).analysis is not None
