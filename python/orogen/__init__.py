@@ -5,18 +5,30 @@
     sim = orogen.Simulation("examples/wedge.toml"); sim.step(100)
     r = orogen.open_run("runs/a"); r.series; r.snapshots
 
-docs/python.md describes it all; the engine is the compiled module _orogen (python/bindings).
+docs/python.md describes it all. The readers (open_run, read_csv) need only numpy, pandas,
+xarray and h5py; the rest needs the compiled engine _orogen (python/bindings), imported on
+first use, so results can be read where the engine was never built.
 """
 
-from ._engine import _orogen
-from .config import ConfigError, load_config, resolved_toml
 from .results import RunFolder, open_run, read_csv
-from .running import FINISHED, STOPPED, RunError, resume, run
-from .simulation import Simulation
 
-InstabilityError = _orogen.InstabilityError
-World = _orogen.World
-__version__ = _orogen.version
+_ENGINE = {
+    "ConfigError": ("config", "ConfigError"), "load_config": ("config", "load_config"),
+    "resolved_toml": ("config", "resolved_toml"), "run": ("running", "run"), "resume": ("running", "resume"),
+    "RunError": ("running", "RunError"), "FINISHED": ("running", "FINISHED"), "STOPPED": ("running", "STOPPED"),
+    "Simulation": ("simulation", "Simulation"), "InstabilityError": ("_engine", "InstabilityError"),
+    "World": ("_engine", "World"), "__version__": ("_engine", "version"),
+}
 
-__all__ = ["ConfigError", "InstabilityError", "RunError", "RunFolder", "Simulation", "World", "FINISHED",
-           "STOPPED", "load_config", "open_run", "read_csv", "resolved_toml", "resume", "run"]
+
+def __getattr__(name):  # PEP 562: the engine's names, imported when first asked for
+    if name not in _ENGINE:
+        raise AttributeError(f"module 'orogen' has no attribute {name!r}")
+    import importlib
+    module, attr = _ENGINE[name]
+    value = getattr(importlib.import_module(f".{module}", __name__), attr)
+    globals()[name] = value
+    return value
+
+
+__all__ = ["RunFolder", "open_run", "read_csv", *[n for n in _ENGINE if not n.startswith("_")]]

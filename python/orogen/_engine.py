@@ -37,6 +37,9 @@ def _load():
 
 
 _orogen = _load()
+InstabilityError = _orogen.InstabilityError
+World = _orogen.World
+version = _orogen.version
 
 # Each per-disc array as a read-only numpy view: world.x, world.radius, world.cluster_id, ...
 for _name in ("x", "y", "vx", "vy", "theta", "omega", "radius", "mass", "id", "cluster_id", "motion",
