@@ -278,8 +278,9 @@ def collect_runs(paths, experiment=None):
 
 def read_frame(path, index=-1):
     """One complete output of snapshots.h5 (index as a Python index over the complete outputs:
-    0 the first, -1 the last) as a dict: the per-disc arrays present among x, y, radius, depth0,
-    x0, y0, motion, cluster_id, id; walls (n x 4: ax, ay, bx, by); the group's attributes (step,
+    0 the first, -1 the last) as a dict: every per-disc dataset of the output (x, y, vx, vy,
+    omega, theta, radius, depth0, x0, y0, motion, cluster_id, id, max_rel_disp, disp3_*, ...:
+    each 1-D dataset of length n); walls (n x 4: ax, ay, bx, by); the group's attributes (step,
     time, S, ...) under 'attrs', the file's (h0, experiment, ...) under 'file_attrs'; 'output'
     (the group's number). None when the file has no complete output. Groups beyond n_outputs
     (left by a killed run) are never read."""
@@ -293,9 +294,10 @@ def read_frame(path, index=-1):
         k = index % n
         g = f["output_%06d" % k]
         frame = {"output": k, "file_attrs": file_attrs, "attrs": {a: _attr(v) for a, v in g.attrs.items()}}
-        for name in ("x", "y", "radius", "depth0", "x0", "y0", "motion", "cluster_id", "id"):
-            if name in g:
-                frame[name] = np.asarray(g[name][:])
+        n_discs = g["x"].shape[0] if "x" in g else None
+        for name, ds in g.items():  # every per-disc field: none is dropped
+            if isinstance(ds, h5py.Dataset) and ds.ndim == 1 and ds.shape[0] == n_discs and name != "walls":
+                frame[name] = np.asarray(ds[:])
         frame["walls"] = np.asarray(g["walls"][:], dtype=float).reshape(-1, 4) if "walls" in g else np.zeros((0, 4))
     for name in ("x", "y", "radius"):
         if name not in frame:

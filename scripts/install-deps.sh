@@ -6,7 +6,8 @@ packages=(build-essential cmake ninja-build pkg-config libgtest-dev libtomlplusp
           python3-matplotlib python3-h5py python3-xarray python3-h5netcdf  # xarray: analysis.h5 from Python
           lammps  # lmp: the export test reads the LAMMPS data file with it, the benchmark (bench/lammps) runs it
           python3-scipy python3-pandas libopenmpi-dev openmpi-bin  # the MPI pair: optional, `orogen ensemble` under mpirun
-          python3-paraview xvfb xauth)  # the ParaView test (pvpython renders through X: xvfb-run)
+          python3-paraview xvfb xauth  # the ParaView test (pvpython renders through X: xvfb-run)
+          pybind11-dev python3-pybind11 python3-pytest)  # the Python module `orogen` (docs/python.md) and its tests
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

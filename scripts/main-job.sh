@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release
+scripts/install-python.sh   # import orogen from any folder (docs/python.md)
 rm -rf runs/main
 build/release/orogen run --out runs/main
 build/release/orogen render runs/main

@@ -151,6 +151,9 @@ class Run {
     ThreadTuner tuner(config_.get_bool("run.adapt_threads") ? omp_get_max_threads() : 1,
                       config_.get_float("run.adapt_slice"));
     while (exp_->advance(world_)) {
+      // A scripted rule acts after its step and before that step's output, so outputs show it.
+      const bool hook_stop =
+          between_every_ > 0 && world_.step % between_every_ == 0 && between_(world_, *exp_);
       const auto work = static_cast<double>(world_.discs.size());
       particle_steps += work;
       const int threads = tuner.threads();
@@ -167,6 +170,13 @@ class Run {
       }
       if ((world_.step & 63) == 0 && progress.enabled())
         progress.update(world_.step, world_.time, world_.discs.size(), exp_->fraction_done(world_), exp_->status(world_));
+      if (hook_stop) {
+        progress.finish();
+        checkpoint();
+        log().info("stopped by the between-steps hook at step {} (t = {:.6g}) after output {}, with a checkpoint",
+                   world_.step, world_.time, state_.outputs - 1);
+        return -1;
+      }
       if (const int sig = StopSignals::received(); sig != 0) {
         progress.finish();
         checkpoint();
@@ -252,6 +262,10 @@ class Run {
   const std::string& branch_from() const { return branch_from_; }
   const std::string& checkpoint_config() const { return checkpoint_config_; }
   void abort_after_outputs(std::int64_t n) { abort_after_outputs_ = n; }
+  void between_steps(BetweenSteps fn, std::uint64_t every) {
+    between_ = std::move(fn);
+    between_every_ = between_ ? every : 0;
+  }
 
  private:
   spdlog::logger& log() { return *spdlog::get("orogen"); }
@@ -405,6 +419,8 @@ class Run {
   std::string checkpoint_config_;  // the configuration the loaded checkpoint was written with
   std::uint64_t last_output_step_ = 0;
   std::int64_t abort_after_outputs_ = 0;
+  BetweenSteps between_;            // RunOptions::between_steps
+  std::uint64_t between_every_ = 0;
   double output_base_ = 0;        // a branch: outputs of its source before its output 0
   std::string branch_from_;       // a branch: "SOURCE_DIR:OUTPUT"
   bool branch_start_ = false;     // the next output is a branch's output 0
@@ -539,6 +555,7 @@ int run_command(const RunOptions& opt) {
 
     Run run(config, opt.out, std::move(experiment));
     run.abort_after_outputs(opt.abort_after_outputs);
+    run.between_steps(opt.between_steps, opt.between_every);
     if (from_checkpoint) {
       run.load_checkpoint(!opt.overrides.empty());
     } else {
@@ -586,7 +603,7 @@ int run_command(const RunOptions& opt) {
     Progress progress(progress_mode(config), console);
     const StopSignals stop_signals;
     try {
-      if (const int sig = run.loop(progress); sig != 0) return 128 + sig;
+      if (const int sig = run.loop(progress); sig != 0) return sig < 0 ? kStoppedByHook : 128 + sig;
     } catch (const InstabilityError& e) {
       progress.finish();
       logger->error("stopped: {}", e.what());

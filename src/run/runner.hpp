@@ -3,11 +3,19 @@
 // log into one folder, and continues a killed run from its last checkpoint (--resume).
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace orogen {
+
+struct World;
+class Experiment;
+
+// A rule called between steps (the Python package's hooks, python/orogen): it may read and
+// change the world through its API; returning true stops the run like SIGTERM, with a checkpoint.
+using BetweenSteps = std::function<bool(World&, const Experiment&)>;
 
 struct RunOptions {
   std::optional<std::filesystem::path> config;  // none: the built-in default
@@ -17,7 +25,12 @@ struct RunOptions {
   bool resume = false;                          // out names a run to continue (overrides: extension keys only)
   std::string from;                             // "RUN_DIR[:OUTPUT]": start from that output (a branch)
   std::int64_t abort_after_outputs = 0;         // test hook: _Exit(137) once this many outputs are written
+  BetweenSteps between_steps;                   // none: the CLI's run, untouched
+  std::uint64_t between_every = 0;              // called after steps that are multiples of this, before their output
 };
+
+// run_command's exit code when between_steps asked the run to stop (it can be resumed).
+inline constexpr int kStoppedByHook = 4;
 
 // Exit codes: 0 done, 1 I/O failure (a full disk, an unwritable file), 2 bad input
 // (configuration, folder), 3 the simulation became unstable, 128 + signal when SIGINT or

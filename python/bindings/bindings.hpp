@@ -1,0 +1,31 @@
+#pragma once
+// The pieces of the `_orogen` extension module (python/orogen imports it), one file each:
+// configuration, the world handle, the in-memory simulation, the run driver.
+#include <pybind11/pybind11.h>
+
+#include <memory>
+
+#include "experiments/experiment.hpp"
+#include "world/world.hpp"
+
+namespace orogen::py {
+
+namespace pyb = pybind11;
+
+// A world seen from Python: the world and the experiment that drives it. A Simulation owns
+// both (`owner` keeps it alive while the handle or a numpy view lives); a hook's handle is
+// valid during the call only and is cleared after it, so a stale use raises instead of crashing.
+struct WorldHandle {
+  World* world = nullptr;
+  const Experiment* experiment = nullptr;
+  pyb::object owner;
+
+  World& get() const;
+};
+
+void bind_config(pyb::module_& m);
+void bind_world(pyb::module_& m);
+void bind_simulation(pyb::module_& m);
+void bind_run(pyb::module_& m);
+
+}  // namespace orogen::py

@@ -1,0 +1,19 @@
+// Configuration: the CLI's Config::load (a TOML file plus "section.key=value" overrides, the
+// same strict checks), so Python and `orogen run` accept and refuse the same configurations.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "bindings.hpp"
+#include "config/config.hpp"
+
+namespace orogen::py {
+
+void bind_config(pyb::module_& m) {
+  pyb::class_<Config>(m, "Config")
+      .def_static("load", &Config::load, pyb::arg("file"), pyb::arg("overrides"),
+                  "A TOML file (or None) and section.key=value overrides, checked as `orogen run` checks them")
+      .def("to_toml", &Config::to_toml, "the resolved configuration, every key, as config.toml holds it")
+      .def("source_of", &Config::source_of, pyb::arg("key"));
+}
+
+}  // namespace orogen::py

@@ -1,0 +1,74 @@
+// `orogen run` from Python: the CLI's own driver (run/runner.cpp), so the files, the bits,
+// the checkpoints, --resume and the progress line are the CLI's. A Python callable may run
+// between steps, every N steps; the engine steps at full speed (without the GIL) in between.
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <optional>
+
+#include "bindings.hpp"
+#include "run/runner.hpp"
+
+namespace orogen::py {
+namespace {
+
+struct RunResult {
+  int exit_code = 0;
+  std::optional<pyb::error_already_set> error;  // what the hook raised (the run stopped there)
+};
+
+RunResult run(std::optional<std::filesystem::path> config, std::vector<std::string> overrides,
+              std::filesystem::path out, int threads, bool resume, std::string from, pyb::object hook,
+              std::uint64_t every) {
+  RunOptions opt;
+  opt.config = std::move(config);
+  opt.overrides = std::move(overrides);
+  opt.out = std::move(out);
+  opt.threads = threads;
+  opt.resume = resume;
+  opt.from = std::move(from);
+  RunResult result;
+  if (!hook.is_none()) {
+    opt.between_every = every;
+    opt.between_steps = [&hook, &result](World& w, const Experiment& e) {
+      pyb::gil_scoped_acquire gil;
+      pyb::object handle = pyb::cast(WorldHandle{&w, &e, pyb::none()});
+      bool stop = false;
+      try {
+        stop = pyb::bool_(hook(handle));
+      } catch (pyb::error_already_set& err) {
+        result.error = std::move(err);  // stop with a checkpoint, re-raised in Python
+        stop = true;
+      }
+      handle.cast<WorldHandle&>().world = nullptr;  // a kept handle must not outlive the call
+      return stop;
+    };
+  }
+  {
+    pyb::gil_scoped_release free;
+    result.exit_code = run_command(opt);
+  }
+  return result;
+}
+
+}  // namespace
+
+void bind_run(pyb::module_& m) {
+  m.attr("STOPPED_BY_HOOK") = kStoppedByHook;
+  m.def(
+      "run",
+      [](std::optional<std::filesystem::path> config, std::vector<std::string> overrides, std::filesystem::path out,
+         int threads, bool resume, std::string from, pyb::object hook, std::uint64_t every) {
+        RunResult r = run(std::move(config), std::move(overrides), std::move(out), threads, resume, std::move(from),
+                          std::move(hook), every);
+        if (r.error) throw std::move(*r.error);
+        return r.exit_code;
+      },
+      pyb::arg("config"), pyb::arg("overrides"), pyb::arg("out"), pyb::arg("threads") = -1,
+      pyb::arg("resume") = false, pyb::arg("from_") = "", pyb::arg("hook") = pyb::none(), pyb::arg("every") = 0,
+      "runs as `orogen run` does; returns its exit code (0 done, 1 I/O, 2 bad input, 3 unstable, 4 stopped by "
+      "the hook, 128+signal)");
+}
+
+}  // namespace orogen::py

@@ -1,0 +1,100 @@
+// An experiment stepped from Python, in memory: the set-up of `orogen run` (engine keys, then
+// the experiment's setup), then Experiment::advance step by step, so the world after n steps is
+// the CLI run's world after n steps, bit for bit. Files are the run driver's job (run_bindings).
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+
+#include "bindings.hpp"
+#include "config/config.hpp"
+#include "io/binary_archive.hpp"
+#include "world/world_archive.hpp"
+
+namespace orogen::py {
+namespace {
+
+class Simulation {
+ public:
+  explicit Simulation(Config config) : config_(std::move(config)), exp_(make_experiment(config_)) {
+    apply_engine_config(config_, world_);
+    exp_->setup(world_);
+  }
+
+  // Up to n steps; fewer once the experiment is done. The GIL is released while stepping.
+  std::uint64_t step(std::uint64_t n) {
+    pyb::gil_scoped_release free;
+    std::uint64_t k = 0;
+    while (k < n && !done_) {
+      if (exp_->advance(world_)) ++k;
+      else done_ = true;
+    }
+    return k;
+  }
+
+  // Steps until the experiment's scalar `key` (or "time") reaches `value`; false if it ended first.
+  bool advance_to(const std::string& key, double value) {
+    auto current = [&] {
+      if (key == "time") return world_.time;
+      for (const auto& [k, v] : exp_->scalars(world_))
+        if (k == key) return v;
+      throw pyb::key_error("advance_to: the experiment has no scalar '" + key + "' (it has time and its output scalars)");
+    };
+    while (current() < value) {
+      if (step(1) == 0) return false;
+      if (PyErr_CheckSignals() != 0) throw pyb::error_already_set();  // Ctrl-C between steps
+    }
+    return true;
+  }
+
+  // The world and the experiment's state, as a checkpoint holds them (world_archive.hpp).
+  void save(const std::filesystem::path& file) {
+    ArchiveWriter out;
+    save_world(out, world_);
+    exp_->save(out);
+    out.put_string("python.config", config_.to_toml());
+    out.finish(file);
+  }
+  void load(const std::filesystem::path& file) {
+    const ArchiveReader in(file);
+    if (in.has("python.config") && in.get_string("python.config") != config_.to_toml())
+      throw pyb::value_error(file.string() + " was saved by a simulation of another configuration");
+    World fresh;
+    apply_engine_config(config_, fresh);
+    load_world(in, fresh);
+    world_ = std::move(fresh);
+    exp_->load(in);
+    exp_->attach(world_);  // hooks are not state
+    done_ = false;
+  }
+
+  World& world() { return world_; }
+  const Experiment& experiment() const { return *exp_; }
+  const Config& config() const { return config_; }
+  bool done() const { return done_; }
+
+ private:
+  Config config_;  // first: the experiment may keep references into it
+  std::unique_ptr<Experiment> exp_;
+  World world_;
+  bool done_ = false;
+};
+
+}  // namespace
+
+void bind_simulation(pyb::module_& m) {
+  pyb::class_<Simulation>(m, "Simulation")
+      .def(pyb::init<Config>(), pyb::arg("config"))
+      .def("step", &Simulation::step, pyb::arg("n") = 1, "up to n steps; returns how many were taken")
+      .def("advance_to", &Simulation::advance_to, pyb::arg("key"), pyb::arg("value"))
+      .def("save", &Simulation::save, pyb::arg("file"))
+      .def("load", &Simulation::load, pyb::arg("file"))
+      .def_property_readonly("done", &Simulation::done)
+      .def_property_readonly("config_toml", [](const Simulation& s) { return s.config().to_toml(); })
+      .def_property_readonly("world", [](pyb::object self) {
+        auto& s = self.cast<Simulation&>();
+        return WorldHandle{&s.world(), &s.experiment(), self};
+      });
+}
+
+}  // namespace orogen::py

@@ -1,0 +1,64 @@
+"""`orogen run` from Python: the CLI's driver writes the same files with the same bits, and a
+Python hook may act between steps.
+
+    orogen.run({"wedge": {"s_end": 2}}, out="runs/a")                   # as the CLI
+    orogen.run("examples/wedge.toml", out="runs/b", hook=erode, every=100)
+    orogen.resume("runs/b", hook=erode, every=100)                       # as --resume
+
+The hook is called as hook(world) after each step whose number is a multiple of `every`, before
+that step's output (so outputs show what it did); between calls the engine runs in C++ without
+the GIL. It changes the world through the World API; returning True stops the run with a
+checkpoint (orogen.resume continues it). What the hook depends on must live in the world or be
+derived from the step number, so that a resumed run calls it alike.
+"""
+
+import signal
+from pathlib import Path
+
+from ._engine import _orogen
+from .config import load_config, overrides, split
+
+
+class RunError(RuntimeError):
+    """`orogen run` ended with a non-zero exit code (the message and run.log say why)."""
+
+    def __init__(self, code, out):
+        self.code = code
+        reasons = {1: "an I/O failure", 2: "bad input (folder or configuration)", 3: "the simulation became unstable"}
+        super().__init__(f"orogen run in {out} ended with exit code {code} "
+                         f"({reasons.get(code, 'see run.log')}); see {Path(out) / 'run.log'}")
+
+
+STOPPED = "stopped"    # the hook returned True: a checkpoint to resume from
+FINISHED = "finished"
+
+
+def _result(code, out):
+    if code == 0:
+        return FINISHED
+    if code == _orogen.STOPPED_BY_HOOK:
+        return STOPPED
+    if code in (128 + signal.SIGINT, 128 + signal.SIGTERM):
+        raise KeyboardInterrupt(f"run in {out} stopped by a signal, with a checkpoint: orogen.resume({str(out)!r})")
+    raise RunError(code, out)
+
+
+def run(config=None, out="out", set=None, hook=None, every=100, threads=None, from_run=None):
+    """Runs any experiment as `orogen run CONFIG --out OUT --set ...` does (config a TOML path,
+    a dict or None; set a dict of overrides; from_run "RUN[:OUTPUT]" as --from). Returns
+    "finished", or "stopped" when the hook asked. Raises ConfigError before anything is written,
+    RunError on the CLI's failures, and what the hook raised (the run checkpointed there)."""
+    file, settings = split(config)
+    load_config(config, set)  # a ConfigError here, as a Python exception, before any file
+    args = overrides(settings) + overrides(set)
+    code = _orogen.run(file, args, Path(out), -1 if threads is None else int(threads), False,
+                       from_run or "", hook, int(every) if hook else 0)
+    return _result(code, out)
+
+
+def resume(out, set=None, hook=None, every=100, threads=None):
+    """Continues a run folder as `orogen run --resume OUT` (set: extension keys only)."""
+    load_config(Path(out) / "config.toml", set)
+    code = _orogen.run(None, overrides(set), Path(out), -1 if threads is None else int(threads), True, "",
+                       hook, int(every) if hook else 0)
+    return _result(code, out)

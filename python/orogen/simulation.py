@@ -1,0 +1,70 @@
+"""An experiment stepped from Python, in memory (no files): the CLI's set-up and steps, bit for bit.
+
+    sim = orogen.Simulation({"run": {"experiment": "wedge"}, "wedge": {"s_end": 1}})
+    sim.step(100)
+    sim.advance_to(S=0.5)
+    x = sim.world.x            # a numpy view, no copy
+    with sim.edit() as w:      # writable views; the world is told on leaving
+        w.array("vx", writable=True)[:] = 0
+"""
+
+import contextlib
+
+from ._engine import _orogen
+from .config import load_config
+
+
+class Simulation:
+    def __init__(self, config=None, set=None):
+        self.config = load_config(config, set)
+        self._sim = _orogen.Simulation(self.config)
+
+    @property
+    def world(self):
+        """The world (orogen World): numpy views, walls, pin/release, add/remove, friction."""
+        return self._sim.world
+
+    @property
+    def done(self):
+        return self._sim.done
+
+    def step(self, n=1, hook=None, every=1):
+        """Takes up to n steps (fewer once the experiment ends); with `hook`, calls hook(world)
+        after each step whose number is a multiple of `every`, as orogen.run does."""
+        if hook is None:
+            return self._sim.step(n)
+        taken = 0
+        while taken < n and not self.done:
+            chunk = min(every - self.world.step % every, n - taken)  # steps to the next call
+            k = self._sim.step(chunk)
+            taken += k
+            if k < chunk:
+                break
+            if self.world.step % every == 0:
+                hook(self.world)
+        return taken
+
+    def advance_to(self, **target):
+        """Steps until a scalar of the experiment (S of a wedge) or `time` reaches the value:
+        advance_to(S=2.0). False if the experiment ended first."""
+        if len(target) != 1:
+            raise TypeError("advance_to takes one keyword, e.g. advance_to(S=2.0) or advance_to(time=5)")
+        ((key, value),) = target.items()
+        return self._sim.advance_to(key, float(value))
+
+    @contextlib.contextmanager
+    def edit(self):
+        """Write into the arrays (world.array(name, writable=True)); on leaving, the world
+        places member discs on their bodies and rebuilds its neighbour list."""
+        try:
+            yield self.world
+        finally:
+            self.world.changed()
+
+    def save(self, path):
+        """The world and the experiment's state (a checkpoint archive)."""
+        self._sim.save(str(path))
+
+    def load(self, path):
+        """Continues from a save() of a simulation of the same configuration, bit for bit."""
+        self._sim.load(str(path))

@@ -1,0 +1,76 @@
+"""orogen.open_run reads every field of a CLI run, with the units the files carry; the chart
+scripts run on a tiny run."""
+
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+import pandas as pd
+import xarray as xr
+
+import orogen
+from conftest import REPO
+
+
+def test_series_and_units(cli_wedge):
+    r = orogen.open_run(cli_wedge)
+    assert r.experiment == "wedge" and r.config["wedge"]["s_end"] == 0.1
+    s = r.series
+    assert isinstance(s, pd.DataFrame) and len(s) == 5
+    assert r.units["H"] == "h0" and r.units["time"] == "sqrt(d/g)" and r.units["alpha"] == "deg"
+    ds = r.series_dataset()
+    assert isinstance(ds, xr.Dataset) and ds["H"].attrs["units"] == "h0" and ds.sizes["output"] == 5
+    assert np.array_equal(ds["step"].values, s["step"].values)
+
+
+def test_snapshots_every_field_lazily_with_units(cli_wedge):
+    r = orogen.open_run(cli_wedge)
+    snaps = r.snapshots
+    files = sorted((cli_wedge / "snapshots").glob("output_*.h5"))
+    assert snaps.sizes["output"] == len(files) == 5
+    # lazy: nothing is read until asked
+    assert not isinstance(snaps["x"].variable._data, np.ndarray)
+    for k, path in enumerate(files):
+        with h5py.File(path, "r") as f:
+            names = {n for n in f if isinstance(f[n], h5py.Dataset)}
+            assert names <= set(snaps.data_vars)
+            n = f["x"].shape[0]
+            assert int(snaps["n_discs"][k]) == n
+            for name in names:
+                want = f[name][()]
+                got = snaps[name].isel(output=k).values
+                got = got[: want.shape[0]]
+                assert np.array_equal(got, want, equal_nan=want.dtype.kind == "f"), name
+                units = f[name].attrs["units"]
+                assert snaps[name].attrs["units"] == (units.decode() if isinstance(units, bytes) else units), name
+            assert float(snaps["time"][k]) == f.attrs["time"]
+    for name in ("vx", "vy", "omega", "theta", "max_rel_disp", "disp3_x", "disp3_y"):  # issue 19's missing ones
+        assert name in snaps
+    assert snaps["omega"].attrs["units"] == "rad / sqrt(d/g)" and snaps["x"].attrs["units"] == "d"
+    assert np.isnan(snaps["x"].values[snaps["x"].values.shape[0] - 1, int(snaps["n_discs"].max()):]).all()
+
+
+def test_one_output_by_id_and_removals(cli_wedge):
+    r = orogen.open_run(cli_wedge)
+    last = r.output(-1)
+    assert last.sizes["particle"] == int(r.snapshots["n_discs"][-1])
+    assert last.attrs["S"] > 0 and last["vx"].attrs["units"] == "sqrt(g d)"
+    assert list(r.removals.columns) == ["step", "time", "id", "cluster_id", "x", "y", "reason"]
+    assert r.summary["S_final"] > 0
+    assert r.analysis is None
+
+
+def test_orogen_io_keeps_every_field(cli_wedge):
+    sys.path.insert(0, str(REPO / "python"))
+    import orogen_io
+    frame = orogen_io.read_last_frame(cli_wedge / "snapshots.h5")
+    for name in ("vx", "vy", "omega", "theta", "max_rel_disp", "disp3_x", "disp3_y", "x", "radius"):
+        assert name in frame, name
+
+
+def test_wedge_charts_on_a_tiny_run(cli_wedge, tmp_path):
+    proc = subprocess.run([sys.executable, str(REPO / "python" / "wedge_charts.py"), str(cli_wedge), "--out",
+                           str(tmp_path / "charts")], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "charts" / "summary.json").exists() and list((tmp_path / "charts").glob("*.png"))
