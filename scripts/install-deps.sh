@@ -6,17 +6,23 @@ packages=(build-essential cmake ninja-build pkg-config libgtest-dev libtomlplusp
           python3-matplotlib python3-h5py python3-xarray python3-h5netcdf  # xarray: analysis.h5 from Python
           lammps  # lmp: the export test reads the LAMMPS data file with it, the benchmark (bench/lammps) runs it
           python3-scipy python3-pandas libopenmpi-dev openmpi-bin  # the MPI pair: optional, `orogen ensemble` under mpirun
-          python3-paraview xvfb xauth)  # the ParaView test (pvpython renders through X: xvfb-run)
+          python3-paraview xvfb xauth  # the ParaView test (pvpython renders through X: xvfb-run)
+          chromium nodejs npm)  # the atlas's browser test (tests/browser: puppeteer-core drives this chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "all packages present"
-  exit 0
+else
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "installing: ${missing[*]}"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
-sudo=""
-[ "$(id -u)" -eq 0 ] || sudo="sudo"
-echo "installing: ${missing[*]}"
-$sudo apt-get update -q
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+# The browser test's driver and the plotting library at the locked versions; puppeteer-core
+# drives the chromium above, so it downloads no browser of its own.
+cd "$(dirname "$0")/../tests/browser"
+PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error ||
+  echo "warning: npm ci in tests/browser failed: the test atlas_browser will fail (orogen report itself needs no npm)"
