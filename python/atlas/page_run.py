@@ -2,6 +2,7 @@
 import os
 
 from . import figures
+from .discover import slug as group_slug
 from .markup import esc, figure, fmt, page, table
 
 # Raw files that stay in the run folder (large, or pointing at other files beside them).
@@ -45,7 +46,6 @@ def build(slug, info, run_dir, site):
     facts += [(k, v) for k, v in info["results"].items()]
     dl = "".join("<div><dt>%s</dt><dd>%s</dd></div>" % (esc(k), esc(fmt(v))) for k, v in facts if v not in (None, ""))
     if info["group"]:
-        from .discover import slug as group_slug
         dl += '<div><dt>part of</dt><dd><a href="%sgroups/%s.html">%s</a></dd></div>' % (
             up, esc(group_slug(info["group"])), esc(info["group"]))
     parts.append('<dl class="facts">%s</dl>' % dl)

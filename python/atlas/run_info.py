@@ -3,7 +3,7 @@ import datetime
 import os
 import re
 
-from . import config_table, csv_series, figures
+from . import config_table, csv_series, figures, presets as preset_match
 
 _TIMESTAMP = re.compile(r"^\[(\d{4})-(\d\d)-(\d\d) (\d\d):(\d\d):(\d\d)\]")
 _FRAME = re.compile(r"^frame_(\d+)\.png$")
@@ -100,17 +100,12 @@ def read(run_dir, rel, group, presets):
     results = {label: summary[col] for label, col, _ in RESULTS if isinstance(summary.get(col), float)}
     return {
         "rel": rel, "group": group, "name": os.path.basename(rel), "experiment": experiment,
-        "preset": _preset(presets, config), "branch": config_table.branch_of(config_text),
+        "preset": preset_match.match(presets, config), "branch": config_table.branch_of(config_text),
         "params": params, "results": results, "status": status, "wall_s": wall,
         "config_rows": config_table.rows(config_text), "frames": frames,
         "animations": _animations(names, frames), "charts": _charts(run_dir),
         "raw": [n for n in RAW if n in names], "has_analysis": "analysis.h5" in names,
     }
-
-
-def _preset(presets, config):
-    from . import presets as p
-    return p.match(presets, config)
 
 
 def series(run_dir):

@@ -169,7 +169,10 @@ for (const rel of pages) {
   if (legend !== chosen.length + 1) fail(`compare: overlay has ${legend - 1} series for ${chosen.length} runs`);
   // The slider half way: every panel at the frame of that S.
   await page.$eval("#slider", (e) => { e.value = Math.floor(+e.max / 2); e.dispatchEvent(new Event("input")); });
-  report.compare = { before, after, half: await state() };
+  const half = await state();
+  if (new Set(half.srcs.map(frame)).size !== 1 || half.srcs.map(frame)[0] === frame(after.srcs[0]))
+    fail(`compare: half way, panels out of step or not moved back: ${half.srcs}`);
+  report.compare = { before, after, half };
   await page.screenshot({ path: path.join(shots, "compare.png"), fullPage: true });
   await page.close();
 }

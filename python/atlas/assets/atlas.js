@@ -87,40 +87,46 @@ ATLAS.unitLabel = function (name, unit) { return name + " [" + (unit || "-") + "
 
 // Frames by x (S or time): one slider shows, for each image, its frame at the largest x not above the slider's.
 ATLAS.player = function (sets, imgs, slider, label, button, xName) {
-  var xs = [];
+  // Runs of other time steps reach an output at slightly other S: values closer than a quarter
+  // of the finest output spacing are one slider step, and every run shows its frame there.
+  var xs = [], tol = Infinity;
   sets.forEach(function (frames) {
-    frames.forEach(function (f, i) { if (f[0] === null) f[0] = i; xs.push(f[0]); });
+    frames.forEach(function (f, i) {
+      if (f[0] === null) f[0] = i;
+      xs.push(f[0]);
+      if (i > 0 && f[0] > frames[i - 1][0]) tol = Math.min(tol, 0.25 * (f[0] - frames[i - 1][0]));
+    });
   });
-  xs = Array.from(new Set(xs)).sort(function (a, b) { return a - b; });
+  if (!isFinite(tol)) tol = 1e-9;
+  xs = xs.sort(function (a, b) { return a - b; }).filter(function (v, i, a) { return i === 0 || v - a[i - 1] > tol; });
   slider.min = 0; slider.max = Math.max(0, xs.length - 1); slider.value = 0;
+  var p = { xs: xs, onshow: null }, timer = null, preloaded = false;
   function show(i) {
     var v = xs[i];
     sets.forEach(function (frames, k) {
       var pick = frames[0];
-      frames.forEach(function (f) { if (f[0] <= v + 1e-12) pick = f; });
+      frames.forEach(function (f) { if (f[0] <= v + tol) pick = f; });
       if (pick && imgs[k].getAttribute("src") !== pick[1]) imgs[k].setAttribute("src", pick[1]);
     });
     label.textContent = xs.length ? xName + " = " + Number(v).toFixed(2) : "no frames";
     if (p.onshow) p.onshow(v);
   }
-  var timer = null, preloaded = false;
   function stop() { clearInterval(timer); timer = null; button.textContent = "▶ play"; }
-  var p = {
-    xs: xs, show: show, stop: stop,
-    play: function () {
-      if (timer) return stop();
-      if (!preloaded) {  // only when played: opening a page loads one frame per image
-        sets.forEach(function (frames) { frames.forEach(function (f) { new Image().src = f[1]; }); });
-        preloaded = true;
-      }
-      if (+slider.value >= xs.length - 1) slider.value = 0;
-      button.textContent = "❚❚ pause";
-      timer = setInterval(function () {
-        var i = +slider.value + 1;
-        if (i > xs.length - 1) return stop();
-        slider.value = i; show(i);
-      }, 120);
+  p.show = show;
+  p.stop = stop;
+  p.play = function () {
+    if (timer) return stop();
+    if (!preloaded) {  // only when played: opening a page loads one frame per image
+      sets.forEach(function (frames) { frames.forEach(function (f) { new Image().src = f[1]; }); });
+      preloaded = true;
     }
+    if (+slider.value >= xs.length - 1) slider.value = 0;
+    button.textContent = "❚❚ pause";
+    timer = setInterval(function () {
+      var i = +slider.value + 1;
+      if (i > xs.length - 1) return stop();
+      slider.value = i; show(i);
+    }, 120);
   };
   slider.oninput = function () { show(+slider.value); };
   button.onclick = p.play;
