@@ -1,9 +1,9 @@
 """The results atlas (`orogen report`, docs/atlas.md) end to end: tiny real runs (an ensemble of
-three seeds, rendered and charted, and an eroding run with its exhumation analysis), the site
-built and updated, then opened in headless Chromium by tests/browser/atlas_browser.mjs
-(puppeteer-core, installed by scripts/install-deps.sh with `npm ci`).
+three seeds, rendered and charted, a sweep of two, and an eroding run with its exhumation
+analysis), the site built and updated, then opened in headless Chromium by
+tests/browser/atlas_browser.mjs (puppeteer-core, installed by scripts/install-deps.sh with `npm ci`).
 
-Skipped, saying so, where chromium or node is missing. Screenshots and the browser's report
+The browser half is skipped, saying so, where chromium or node is missing. Screenshots and the browser's report
 stay in $ATLAS_ARTEFACTS (CTest: build/<preset>/atlas_test/).
 
     OROGEN_BINARY=build/release/orogen /usr/bin/python3 -m unittest -v tests/python/test_atlas.py
@@ -45,6 +45,75 @@ def draw_run(run):
     sh("/usr/bin/python3", os.path.join(ROOT, "python", "wedge_charts.py"), run, "--out", os.path.join(run, "charts"))
 
 
+TMP = RUNS = SITE = FIRST = None
+
+
+def setUpModule():
+    """The runs and the site, once for both classes (about 20 s)."""
+    global TMP, RUNS, SITE, FIRST
+    TMP = tempfile.mkdtemp(prefix="orogen_atlas_")
+    RUNS = os.path.join(TMP, "runs")
+    os.makedirs(RUNS)
+    plan = os.path.join(TMP, "tiny.toml")
+    with open(plan, "w") as f:
+        f.write(ENSEMBLE)
+    sh(BINARY, "ensemble", plan, "--out", os.path.join(RUNS, "tiny_ensemble"), "--jobs", "2", "--threads", "1")
+    sh("/usr/bin/python3", os.path.join(ROOT, "python", "ensemble_charts.py"), os.path.join(RUNS, "tiny_ensemble"))
+    for seed in ("seed1", "seed2", "seed3"):
+        draw_run(os.path.join(RUNS, "tiny_ensemble", "members", seed))
+    sweep = os.path.join(TMP, "tiny_sweep.toml")
+    with open(sweep, "w") as f:
+        f.write('[sweep]\nbase = "%s"\n\n[set]\n%s\n[matrix]\n"contact.mu" = [0.2, 0.4]\n'
+                % (os.path.join(ROOT, "examples", "wedge_main_modest.toml"),
+                   "".join('"%s" = %s\n' % kv for kv in SMALL.items())))
+    sh(BINARY, "sweep", sweep, "--out", os.path.join(RUNS, "tiny_sweep"), "--jobs", "2")
+    eroding = os.path.join(RUNS, "eroding")
+    sets = [a for k, v in SMALL.items() for a in ("--set", "%s=%s" % (k, v))]
+    sh(BINARY, "run", "--out", eroding, "--threads", "1", "--set", "wedge.erosion_height=0.9",
+       "--set", "output.progress=never", *sets)
+    sh(BINARY, "analyze", eroding)
+    sh("/usr/bin/python3", os.path.join(ROOT, "python", "exhumation_charts.py"), eroding)
+    draw_run(eroding)
+    SITE = os.path.join(TMP, "site")
+    FIRST = sh(BINARY, "report", RUNS, "--out", SITE)
+
+
+def tearDownModule():
+    if TMP:
+        shutil.rmtree(TMP, ignore_errors=True)
+
+
+class AtlasSite(unittest.TestCase):
+    """The site's files, updates and errors: no browser needed."""
+
+    def test_1_site_has_every_run_and_group(self):
+        self.assertIn("6 runs (6 pages rebuilt), 2 sweeps/ensembles", FIRST.stdout)
+        for f in ("index.html", "compare.html", "data/catalog.js", "assets/uPlot.iife.min.js", "assets/uPlot.LICENSE",
+                  "groups/tiny_ensemble.html", "runs/eroding.html", "runs/eroding/charts/exhumation/flux.png"):
+            self.assertTrue(os.path.isfile(os.path.join(SITE, f)), f)
+        with open(os.path.join(SITE, "groups", "tiny_ensemble.html")) as f:
+            group = f.read()
+        self.assertIn("Table 5.1", group)
+        self.assertIn("fig5_16_mean_fronts.png", group)
+        with open(os.path.join(SITE, "groups", "tiny_sweep.html")) as f:
+            sweep = f.read()
+        self.assertEqual(sweep.count('href="../runs/tiny_sweep--runs--'), 2, sweep)
+
+    def test_2_update_rebuilds_only_what_changed(self):
+        self.assertIn("(0 pages rebuilt)", sh(BINARY, "report", RUNS, "--out", SITE).stdout)
+        os.utime(os.path.join(RUNS, "eroding", "series.csv"))
+        self.assertIn("(1 pages rebuilt)", sh(BINARY, "report", RUNS, "--out", SITE).stdout)
+
+    def test_3_bad_input_is_named(self):
+        for args, words in ((["report", os.path.join(TMP, "missing")], "no such folder"),
+                            (["report", RUNS, "--out", os.path.join(TMP, "tiny.toml")], "a file is there"),
+                            (["report", RUNS, "--out", RUNS], "holds no atlas")):
+            r = subprocess.run([BINARY, *args], capture_output=True, text=True)
+            self.assertEqual(r.returncode, 2, r.stderr)
+            self.assertIn(words, r.stderr)
+
+
+
 @unittest.skipUnless(os.path.exists(CHROMIUM) and os.path.exists(NODE), "chromium or node not found")
 class AtlasInChromium(unittest.TestCase):
     @classmethod
@@ -52,52 +121,6 @@ class AtlasInChromium(unittest.TestCase):
         if not os.path.isdir(os.path.join(BROWSER, "node_modules", "puppeteer-core")):
             raise AssertionError("tests/browser/node_modules is missing: run scripts/install-deps.sh "
                                  "(npm ci in tests/browser)")
-        cls.tmp = tempfile.mkdtemp(prefix="orogen_atlas_")
-        cls.runs = os.path.join(cls.tmp, "runs")
-        os.makedirs(cls.runs)
-        plan = os.path.join(cls.tmp, "tiny.toml")
-        with open(plan, "w") as f:
-            f.write(ENSEMBLE)
-        sh(BINARY, "ensemble", plan, "--out", os.path.join(cls.runs, "tiny_ensemble"), "--jobs", "2", "--threads", "1")
-        sh("/usr/bin/python3", os.path.join(ROOT, "python", "ensemble_charts.py"), os.path.join(cls.runs, "tiny_ensemble"))
-        for seed in ("seed1", "seed2", "seed3"):
-            draw_run(os.path.join(cls.runs, "tiny_ensemble", "members", seed))
-        eroding = os.path.join(cls.runs, "eroding")
-        sets = [a for k, v in SMALL.items() for a in ("--set", "%s=%s" % (k, v))]
-        sh(BINARY, "run", "--out", eroding, "--threads", "1", "--set", "wedge.erosion_height=0.9",
-           "--set", "output.progress=never", *sets)
-        sh(BINARY, "analyze", eroding)
-        sh("/usr/bin/python3", os.path.join(ROOT, "python", "exhumation_charts.py"), eroding)
-        draw_run(eroding)
-        cls.site = os.path.join(cls.tmp, "site")
-        cls.first = sh(BINARY, "report", cls.runs, "--out", cls.site)
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.tmp, ignore_errors=True)
-
-    def test_1_site_has_every_run_and_group(self):
-        self.assertIn("4 runs (4 pages rebuilt), 1 sweeps/ensembles", self.first.stdout)
-        for f in ("index.html", "compare.html", "data/catalog.js", "assets/uPlot.iife.min.js", "assets/uPlot.LICENSE",
-                  "groups/tiny_ensemble.html", "runs/eroding.html", "runs/eroding/charts/exhumation/flux.png"):
-            self.assertTrue(os.path.isfile(os.path.join(self.site, f)), f)
-        with open(os.path.join(self.site, "groups", "tiny_ensemble.html")) as f:
-            group = f.read()
-        self.assertIn("Table 5.1", group)
-        self.assertIn("fig5_16_mean_fronts.png", group)
-
-    def test_2_update_rebuilds_only_what_changed(self):
-        self.assertIn("(0 pages rebuilt)", sh(BINARY, "report", self.runs, "--out", self.site).stdout)
-        os.utime(os.path.join(self.runs, "eroding", "series.csv"))
-        self.assertIn("(1 pages rebuilt)", sh(BINARY, "report", self.runs, "--out", self.site).stdout)
-
-    def test_3_bad_input_is_named(self):
-        for args, words in ((["report", os.path.join(self.tmp, "missing")], "no such folder"),
-                            (["report", self.runs, "--out", os.path.join(self.tmp, "tiny.toml")], "a file is there"),
-                            (["report", self.runs, "--out", self.runs], "holds no atlas")):
-            r = subprocess.run([BINARY, *args], capture_output=True, text=True)
-            self.assertEqual(r.returncode, 2, r.stderr)
-            self.assertIn(words, r.stderr)
 
     def test_4_vendored_plot_library_is_the_npm_package(self):
         for name in ("uPlot.iife.min.js", "uPlot.min.css"):
@@ -107,7 +130,7 @@ class AtlasInChromium(unittest.TestCase):
 
     def test_5_in_chromium(self):
         shots = os.path.join(ARTEFACTS, "screenshots")
-        r = subprocess.run([NODE, os.path.join(BROWSER, "atlas_browser.mjs"), self.site, shots, CHROMIUM],
+        r = subprocess.run([NODE, os.path.join(BROWSER, "atlas_browser.mjs"), SITE, shots, CHROMIUM],
                            capture_output=True, text=True, timeout=240)
         sys.stdout.write(r.stdout[-4000:] + r.stderr[-2000:])
         self.assertEqual(r.returncode, 0, r.stdout[-3000:] + r.stderr[-2000:])
