@@ -73,6 +73,7 @@ def setUpModule():
        "--set", "output.progress=never", *sets)
     sh(BINARY, "analyze", eroding)
     sh("/usr/bin/python3", os.path.join(ROOT, "python", "exhumation_charts.py"), eroding)
+    sh("/usr/bin/python3", os.path.join(ROOT, "python", "exhumation_frames.py"), eroding, "--width", "480", "--fps", "6")
     draw_run(eroding)
     SITE = os.path.join(TMP, "site")
     FIRST = sh(BINARY, "report", RUNS, "--out", SITE)
@@ -89,7 +90,8 @@ class AtlasSite(unittest.TestCase):
     def test_1_site_has_every_run_and_group(self):
         self.assertIn("6 runs (6 pages rebuilt), 2 sweeps/ensembles", FIRST.stdout)
         for f in ("index.html", "compare.html", "data/catalog.js", "assets/uPlot.iife.min.js", "assets/uPlot.LICENSE",
-                  "groups/tiny_ensemble.html", "runs/eroding.html", "runs/eroding/charts/exhumation/flux.png"):
+                  "groups/tiny_ensemble.html", "runs/eroding.html", "runs/eroding/charts/exhumation/flux.png",
+                  "runs/eroding/frames_max_depth/frame_000012.png", "runs/eroding/animation_frames_age.gif"):
             self.assertTrue(os.path.isfile(os.path.join(SITE, f)), f)
         with open(os.path.join(SITE, "groups", "tiny_ensemble.html")) as f:
             group = f.read()
