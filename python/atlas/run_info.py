@@ -50,7 +50,9 @@ def _status_and_wall(run_dir, names):
 def _frames(run_dir, names):
     """{frames folder: [output index, ...]} of every rendered frames folder."""
     out = {}
-    for d in sorted(n for n in names if n.startswith("frames")):
+    order = list(figures.ANIMATIONS)  # horizons, faults, then the exhumation's, then any other
+    for d in sorted((n for n in names if n.startswith("frames")),
+                    key=lambda n: (order.index(n) if n in order else len(order), n)):
         path = os.path.join(run_dir, d)
         if not os.path.isdir(path):
             continue
