@@ -50,6 +50,8 @@ def table(headers, rows, cls="sortable", attrs=""):
         cells = []
         for content, key in row:
             k = ' data-sort="%s"' % esc(str(key)) if key is not None else ""
+            if isinstance(key, (int, float)) and not isinstance(key, bool):
+                k += ' class="num"'  # numbers right-aligned, text left
             cells.append("<td%s>%s</td>" % (k, content))
         body.append("<tr>%s</tr>" % "".join(cells))
     return ('<div class="scroll"><table class="%s"%s><thead><tr>%s</tr></thead><tbody>%s</tbody></table></div>'
