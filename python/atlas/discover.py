@@ -25,10 +25,10 @@ def find(root, site):
     site = os.path.abspath(site)
     runs, groups, group_of_parent = [], [], {}
     for here, dirs, files in os.walk(root):
-        if os.path.abspath(here) == site:
-            dirs[:] = []
-            continue
         names = set(dirs) | set(files)
+        if os.path.abspath(here) == site or {"manifest.json", "index.html", "assets"} <= names:
+            dirs[:] = []  # an atlas (this one or another): its copies of run files are not runs
+            continue
         rel = os.path.relpath(here, root)
         rel = "" if rel == "." else rel
         if is_sweep(names) or is_ensemble(names):
