@@ -35,6 +35,7 @@ def build(root, site, log=print):
     old = manifest.load(site)
     new = {"runs": {}}
     preset_list = presets.load(EXAMPLES)
+    member_presets = {rel: presets.ensemble_members(path) for path, rel, kind in groups if kind == "ensemble"}
     infos, rebuilt = [], 0
     for (run_dir, rel, group), slug in zip(runs, _unique_slugs(runs)):
         sig = manifest.signature(run_dir)
@@ -44,6 +45,7 @@ def build(root, site, log=print):
             info = prev["info"]
         else:
             info = run_info.read(run_dir, rel, group, preset_list)
+            info["preset"] = member_presets.get(group, {}).get(os.path.basename(run_dir)) or info["preset"]
             for f in page_run.files_to_place(info):
                 place_file(os.path.join(run_dir, f), os.path.join(site, "runs", slug, f))
             data = page_run.data(slug, info, run_info.series(run_dir))
