@@ -62,7 +62,7 @@ def build(root, site, log=print):
     for group_dir, rel, kind in groups:
         slug = discover.slug(rel)
         write_text(os.path.join(site, "groups", slug + ".html"),
-                   page_group.build(group_dir, rel, kind, site, known, place_file))
+                   page_group.build(group_dir, rel, kind, site, known, place_file, infos))
         group_rows.append((slug, rel, kind, sum(1 for _, i in infos if i["group"] == rel)))
     catalog = [{"slug": s, "name": i["rel"], "experiment": i["experiment"], "status": i["status"],
                 "frames": list(i["frames"])} for s, i in infos]

@@ -63,12 +63,35 @@ def _aggregate(group_dir, site_dir, place):
     return "<h2>Statistics <span class=\"muted\">(aggregate/)</span></h2>" + "".join(parts)
 
 
-def build(group_dir, rel, kind, site, known, place):
+# The exhumation figures shown per member on a group page (all are on the member's page).
+EXHUMATION_HEADLINE = ("charts/exhumation/spacetime_max_depth.png", "charts/exhumation/spacetime_surface_age.png",
+                       "charts/exhumation/flux.png")
+
+
+def _exhumation(rel, infos):
+    """The members' key exhumation figures side by side, where `orogen analyze` and the charts ran."""
+    parts = []
+    for slug, info in infos:
+        if info["group"] != rel:
+            continue
+        have = {c[0]: c for c in info["charts"]}
+        figs = [figure("../runs/%s/%s" % (slug, path), "%s: %s" % (info["name"], have[path][1]), have[path][2])
+                for path in EXHUMATION_HEADLINE if path in have]
+        if figs:
+            parts.append("<div class=\"charts\">%s</div>" % "".join(figs))
+    if not parts:
+        return ""
+    return ("<h2>Exhumation</h2><p class=\"muted\">Each member's maximum depth and surface age in space and "
+            "time and its flux balance; every exhumation figure is on the member's page.</p>" + "".join(parts))
+
+
+def build(group_dir, rel, kind, site, known, place, infos=()):
     slug = slug_of(rel)
     site_dir = os.path.join(site, "groups", slug)
     body = ("<h1>%s <span class=\"muted\">%s</span></h1>" % (esc(rel), kind)
             + "<h2>Results</h2>" + _results(group_dir, rel, kind, known)
-            + (_aggregate(group_dir, site_dir, place) if kind == "ensemble" else ""))
+            + (_aggregate(group_dir, site_dir, place) if kind == "ensemble" else "")
+            + _exhumation(rel, infos))
     links = []
     for name in ("results.csv", "results.md", "members.csv"):
         if os.path.isfile(os.path.join(group_dir, name)):
