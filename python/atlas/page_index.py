@@ -7,15 +7,16 @@ def build(runs, groups):
     """runs: [(slug, info)], groups: [(slug, rel, kind, n_runs)]."""
     params = [label for label, _ in PARAMS if any(label in i["params"] for _, i in runs)]
     results = [label for label, _, _ in RESULTS if any(label in i["results"] for _, i in runs)]
-    headers = ["run", "group", "experiment", "preset", "status", "wall time [s]"] + params + results
+    # The run's path names its sweep or ensemble; results before parameters, as a reader scans.
+    headers = ["run", "experiment", "preset", "status", "wall time [s]"] + results + params
     rows = []
     for slug, i in runs:
         row = [('<a href="runs/%s.html">%s</a>' % (esc(slug), esc(i["rel"])), i["rel"]),
-               cell(i["group"]), cell(i["experiment"]), cell(i["preset"] or ("branch" if i["branch"] else "")),
+               cell(i["experiment"]), cell(i["preset"] or ("branch" if i["branch"] else "")),
                ('<span class="status %s">%s</span>' % (esc(i["status"]), esc(i["status"])), i["status"]),
                cell(round(i["wall_s"], 1) if i["wall_s"] is not None else None)]
-        row += [cell(i["params"].get(p)) for p in params]
         row += [cell(i["results"].get(r)) for r in results]
+        row += [cell(i["params"].get(p)) for p in params]
         rows.append(row)
     experiments = sorted({i["experiment"] for _, i in runs})
     statuses = sorted({i["status"] for _, i in runs})
