@@ -144,10 +144,13 @@ function sortTable(table, col, th) {
     var c = r.cells[col];
     if (!c) return "";
     var s = c.getAttribute("data-sort");
-    return s !== null && s !== "" && !isNaN(+s) ? +s : c.textContent.trim().toLowerCase();
+    if (s !== null && s !== "" && !isNaN(+s)) return +s;
+    var t = c.textContent.trim().toLowerCase();
+    return t === "" ? null : t;
   };
   rows.sort(function (a, b) {
     var x = key(a), y = key(b);
+    if (x === null || y === null) return (x === null) - (y === null);  // empty cells last, either way
     if (typeof x !== typeof y) return (typeof x === "number" ? -1 : 1) * dir;
     return (x < y ? -1 : x > y ? 1 : 0) * dir;
   });
