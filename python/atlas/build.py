@@ -64,6 +64,7 @@ def build(root, site, log=print):
         write_text(os.path.join(site, "groups", slug + ".html"),
                    page_group.build(group_dir, rel, kind, site, known, place_file, infos))
         group_rows.append((slug, rel, kind, sum(1 for _, i in infos if i["group"] == rel)))
+    _remove_gone_groups(site, {slug for slug, _, _, _ in group_rows})
     catalog = [{"slug": s, "name": i["rel"], "experiment": i["experiment"], "status": i["status"],
                 "frames": list(i["frames"])} for s, i in infos]
     write_text(os.path.join(site, "data", "catalog.js"), "ATLAS.catalog = %s;\n" % json_for_script(catalog))
@@ -82,3 +83,14 @@ def _remove_gone(site, old, new):
             if os.path.isfile(path):
                 os.remove(path)
         shutil.rmtree(os.path.join(site, "runs", slug), ignore_errors=True)
+
+
+def _remove_gone_groups(site, kept):
+    folder = os.path.join(site, "groups")
+    if not os.path.isdir(folder):
+        return
+    for name in os.listdir(folder):
+        slug = name[:-5] if name.endswith(".html") else name
+        if slug not in kept:
+            path = os.path.join(folder, name)
+            shutil.rmtree(path) if os.path.isdir(path) else os.remove(path)
