@@ -44,11 +44,16 @@ def build(root, site, log=print):
         if prev and prev.get("signature") == sig and os.path.isfile(page_path):
             info = prev["info"]
         else:
-            info = run_info.read(run_dir, rel, group, preset_list)
+            try:  # a run being written or damaged is skipped, said, and tried again next time
+                info = run_info.read(run_dir, rel, group, preset_list)
+                series = run_info.series(run_dir)
+            except (OSError, ValueError) as e:
+                log("atlas: skipped %s: %s" % (run_dir, e))
+                continue
             info["preset"] = member_presets.get(group, {}).get(os.path.basename(run_dir)) or info["preset"]
             for f in page_run.files_to_place(info):
                 place_file(os.path.join(run_dir, f), os.path.join(site, "runs", slug, f))
-            data = page_run.data(slug, info, run_info.series(run_dir))
+            data = page_run.data(slug, info, series)
             write_text(os.path.join(site, "data", "run_%s.js" % slug),
                        "ATLAS.add(%s);\n" % json_for_script(data))
             write_text(page_path, page_run.build(slug, info, run_dir, site))

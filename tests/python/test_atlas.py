@@ -106,6 +106,22 @@ class AtlasSite(unittest.TestCase):
         os.utime(os.path.join(RUNS, "eroding", "series.csv"))
         self.assertIn("(1 pages rebuilt)", sh(BINARY, "report", RUNS, "--out", SITE).stdout)
 
+    def test_2b_a_run_just_started_is_listed_as_incomplete(self):
+        more = os.path.join(TMP, "more")
+        os.makedirs(os.path.join(more, "starting"))
+        shutil.copy(os.path.join(RUNS, "eroding", "config.toml"), os.path.join(more, "starting"))
+        open(os.path.join(more, "starting", "series.csv"), "w").close()  # no rows yet
+        os.makedirs(os.path.join(more, "broken"))
+        with open(os.path.join(more, "broken", "config.toml"), "w") as f:
+            f.write("this is = not [toml\n")
+        with open(os.path.join(more, "broken", "series.csv"), "w") as f:
+            f.write("step,time\n0,0\n")
+        out = sh(BINARY, "report", more, "--out", os.path.join(TMP, "more_site")).stdout
+        self.assertIn("2 runs (2 pages rebuilt)", out)
+        with open(os.path.join(TMP, "more_site", "index.html")) as f:
+            index = f.read()
+        self.assertIn('status incomplete">incomplete', index)
+
     def test_3_bad_input_is_named(self):
         for args, words in ((["report", os.path.join(TMP, "missing")], "no such folder"),
                             (["report", RUNS, "--out", os.path.join(TMP, "tiny.toml")], "a file is there"),
