@@ -7,7 +7,11 @@ packages=(build-essential cmake ninja-build pkg-config libgtest-dev libtomlplusp
           lammps  # lmp: the export test reads the LAMMPS data file with it, the benchmark (bench/lammps) runs it
           python3-scipy python3-pandas libopenmpi-dev openmpi-bin  # the MPI pair: optional, `orogen ensemble` under mpirun
           python3-paraview xvfb xauth  # the ParaView test (pvpython renders through X: xvfb-run)
-          chromium nodejs npm)  # the atlas's browser test (tests/browser: puppeteer-core drives this chromium)
+          chromium)  # the atlas's browser test (tests/browser: puppeteer-core drives this chromium)
+# node and npm for that test: Debian's, unless a node of another origin (NodeSource's nodejs,
+# which ships npm and conflicts with Debian's npm) is already there.
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
