@@ -7,17 +7,27 @@ packages=(build-essential cmake ninja-build pkg-config libgtest-dev libtomlplusp
           lammps  # lmp: the export test reads the LAMMPS data file with it, the benchmark (bench/lammps) runs it
           python3-scipy python3-pandas libopenmpi-dev openmpi-bin  # the MPI pair: optional, `orogen ensemble` under mpirun
           python3-paraview xvfb xauth  # the ParaView test (pvpython renders through X: xvfb-run)
-          pybind11-dev python3-pybind11 python3-pytest)  # the Python module `orogen` (docs/python.md) and its tests
+          pybind11-dev python3-pybind11 python3-pytest  # the Python module `orogen` (docs/python.md) and its tests
+          chromium)  # the atlas's browser test (tests/browser: puppeteer-core drives this chromium)
+# node and npm for that test: Debian's, unless a node of another origin (NodeSource's nodejs,
+# which ships npm and conflicts with Debian's npm) is already there.
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -eq 0 ]; then
   echo "all packages present"
-  exit 0
+else
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "installing: ${missing[*]}"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
-sudo=""
-[ "$(id -u)" -eq 0 ] || sudo="sudo"
-echo "installing: ${missing[*]}"
-$sudo apt-get update -q
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+# The browser test's driver and the plotting library at the locked versions; puppeteer-core
+# drives the chromium above, so it downloads no browser of its own.
+cd "$(dirname "$0")/../tests/browser"
+PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error ||
+  echo "warning: npm ci in tests/browser failed: the test atlas_browser will fail (orogen report itself needs no npm)"

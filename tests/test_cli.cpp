@@ -784,6 +784,23 @@ TEST_F(Cli, AFinishedWedgeExtendedWithResumeEqualsOneRunToTheNewEnd) {
   expect_same_bytes(whole / "config.toml", extended / "config.toml");
 }
 
+TEST_F(Cli, ReportRefusesBadFoldersNamingThem) {
+  // The atlas itself is tested end to end in tests/python/test_atlas.py; here the checks the
+  // C++ side makes before it starts Python.
+  const auto missing = orogen_cli("report '" + (dir_ / "missing").string() + "'", dir_);
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("no such folder"), std::string::npos) << missing.err;
+  const fs::path file = dir_ / "file.txt";
+  spit(file, "x");
+  const auto not_dir = orogen_cli("report '" + file.string() + "'", dir_);
+  EXPECT_EQ(not_dir.status, 2);
+  EXPECT_NE(not_dir.err.find("not a folder"), std::string::npos) << not_dir.err;
+  const auto out_file = orogen_cli("report '" + dir_.string() + "' --out '" + file.string() + "'", dir_);
+  EXPECT_EQ(out_file.status, 2);
+  EXPECT_NE(out_file.err.find("a file is there"), std::string::npos) << out_file.err;
+  EXPECT_EQ(orogen_cli("report", dir_).status, 2);  // DIR is required
+}
+
 TEST_F(Cli, AnUnknownCommandIsNamedAndTheHelpIsClean) {
   const auto r = orogen_cli("frobnicate --out x", dir_);
   EXPECT_EQ(r.status, 2);

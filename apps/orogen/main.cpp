@@ -11,6 +11,7 @@
 #include "run/ensemble_command.hpp"
 #include "run/export_command.hpp"
 #include "run/render_command.hpp"
+#include "run/report_command.hpp"
 #include "run/runner.hpp"
 #include "run/sweep_command.hpp"
 #include "util/parallel.hpp"
@@ -140,6 +141,14 @@ int main(int argc, char** argv) {
                                                  "trace back the surface particles of this output (default -1: the last)")
                              ->check(not_empty);
 
+  orogen::ReportOptions report;
+  std::string report_dir, report_out;
+  auto* report_cmd = app.add_subcommand("report", "build or update the results atlas: a static web site of every "
+                                                  "run, sweep and ensemble under DIR (docs/atlas.md)");
+  report_cmd->add_option("dir", report_dir, "folder holding runs, sweeps and ensembles (searched at any depth)")
+      ->required();
+  report_cmd->add_option("--out,-o", report_out, "site folder (default DIR/atlas); open SITE/index.html");
+
   bool markdown = false;
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
   config_cmd->add_flag("--markdown", markdown, "print the key reference as Markdown tables instead");
@@ -200,6 +209,11 @@ int main(int argc, char** argv) {
     export_opt.dir = export_dir;
     export_opt.to = export_to;
     return orogen::export_command(export_opt);
+  }
+  if (*report_cmd) {
+    report.dir = report_dir;
+    report.out = report_out;
+    return orogen::report_command(report);
   }
   if (*analyze_cmd) {
     analyze.dir = analyze_dir;

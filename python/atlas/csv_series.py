@@ -1,0 +1,57 @@
+"""Orogen's CSV files (series.csv, summary.csv, results.csv, aggregate tables): `# name:
+meaning [unit]` lines before the header row, then numbers."""
+import csv
+import math
+import re
+
+_DOC = re.compile(r"^#\s*([A-Za-z0-9_.\-]+):\s*(.*?)\s*(?:\[([^\]]*)\])?\s*$")
+
+
+def read(path):
+    """{'columns': [...], 'units': {name: unit}, 'docs': {name: text}, 'rows': [[str...]]}."""
+    docs, units, lines = {}, {}, []
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for line in f:
+            if line.startswith("#"):
+                m = _DOC.match(line.strip())
+                if m:
+                    docs[m.group(1)] = m.group(2)
+                    if m.group(3) is not None:
+                        units[m.group(1)] = m.group(3)
+            elif line.strip():
+                lines.append(line)
+    rows = list(csv.reader(lines))
+    if not rows:
+        return {"columns": [], "units": units, "docs": docs, "rows": []}
+    return {"columns": rows[0], "units": units, "docs": docs, "rows": rows[1:]}
+
+
+def number(text):
+    """A float, or None for empty, nan or text (JSON has no NaN)."""
+    try:
+        v = float(text)
+    except (TypeError, ValueError):
+        return None
+    return v if math.isfinite(v) else None
+
+
+def columns_as_numbers(table):
+    """{name: [float or None, ...]} for every column."""
+    cols = {c: [] for c in table["columns"]}
+    for row in table["rows"]:
+        for i, c in enumerate(table["columns"]):
+            cols[c].append(number(row[i]) if i < len(row) else None)
+    return cols
+
+
+def first_row(path):
+    """summary.csv: {name: float or text} of its single row, {} when absent."""
+    try:
+        t = read(path)
+    except OSError:
+        return {}
+    if not t["rows"]:
+        return {}
+    row = t["rows"][0]
+    return {c: (number(row[i]) if number(row[i]) is not None else row[i]) for i, c in enumerate(t["columns"])
+            if i < len(row)}
