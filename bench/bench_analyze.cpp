@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "config/config.hpp"
+#include "exhumation/analyze_command.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot_writer.hpp"
 #include "particles/discs.hpp"
-#include "run/analyze_command.hpp"
 
 using namespace orogen;
 namespace fs = std::filesystem;

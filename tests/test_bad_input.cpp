@@ -14,8 +14,8 @@
 #include "config/config.hpp"
 #include "config/schema.hpp"
 #include "experiments/experiment.hpp"
-#include "run/thread_tuner.hpp"
 #include "temp_dir_fixture.hpp"
+#include "util/thread_tuner.hpp"
 
 namespace fs = std::filesystem;
 

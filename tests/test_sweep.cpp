@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "config/config.hpp"
-#include "run/sweep_log_tail.hpp"
-#include "run/sweep_plan.hpp"
-#include "run/sweep_run_state.hpp"
+#include "sweep/sweep_log_tail.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_run_state.hpp"
 #include "temp_dir_fixture.hpp"
 
 namespace fs = std::filesystem;

@@ -3,7 +3,7 @@
 // comes and goes.
 #include <gtest/gtest.h>
 
-#include "run/thread_tuner.hpp"
+#include "util/thread_tuner.hpp"
 
 namespace orogen {
 namespace {

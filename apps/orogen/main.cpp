@@ -5,15 +5,15 @@
 #include <iostream>
 #include <limits>
 
+#include "commands/export_command.hpp"
+#include "commands/render_command.hpp"
+#include "commands/report_command.hpp"
 #include "config/config.hpp"
 #include "config/schema.hpp"
-#include "run/analyze_command.hpp"
-#include "run/ensemble_command.hpp"
-#include "run/export_command.hpp"
-#include "run/render_command.hpp"
-#include "run/report_command.hpp"
+#include "ensemble/ensemble_command.hpp"
+#include "exhumation/analyze_command.hpp"
 #include "run/runner.hpp"
-#include "run/sweep_command.hpp"
+#include "sweep/sweep_command.hpp"
 #include "util/parallel.hpp"
 
 int main(int argc, char** argv) {

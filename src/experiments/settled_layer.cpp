@@ -1,6 +1,6 @@
 #include "experiments/settled_layer.hpp"
 
-#include "run/thread_tuner.hpp"
+#include "util/thread_tuner.hpp"
 
 namespace orogen {
 

@@ -15,6 +15,7 @@
 
 #include "analysis/contact_output.hpp"
 #include "config/config.hpp"
+#include "exhumation/analyze_command.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/spec_from_config.hpp"
 #include "io/atomic_file.hpp"
@@ -22,14 +23,13 @@
 #include "io/snapshot_reader.hpp"
 #include "io/snapshot_writer.hpp"
 #include "io/vtp_writer.hpp"
-#include "run/analyze_command.hpp"
 #include "run/branch_source.hpp"
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
 #include "run/run_folder.hpp"
 #include "run/status_line_sink.hpp"
 #include "run/stop_signals.hpp"
-#include "run/thread_tuner.hpp"
+#include "util/thread_tuner.hpp"
 #include "world/world_archive.hpp"
 
 namespace fs = std::filesystem;

@@ -1,7 +1,8 @@
 #pragma once
 // A pool of child processes for `orogen ensemble`: each task is this executable started again
 // with its own arguments (spawn_self, so it dies with the ensemble), `jobs` at a time, in task
-// order. Built on the sweep's process primitives (sweep_processes.hpp, sweep_report.hpp).
+// order. Built on the sweep's process primitives (src/sweep/sweep_processes.hpp,
+// sweep_report.hpp).
 #include <cstddef>
 #include <filesystem>
 #include <functional>

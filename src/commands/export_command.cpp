@@ -1,4 +1,4 @@
-#include "run/export_command.hpp"
+#include "commands/export_command.hpp"
 
 #include <fmt/format.h>
 

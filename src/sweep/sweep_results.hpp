@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "run/sweep_plan.hpp"
+#include "sweep/sweep_plan.hpp"
 
 namespace orogen {
 

@@ -1,4 +1,4 @@
-#include "run/sweep_processes.hpp"
+#include "sweep/sweep_processes.hpp"
 #include "util/timestamp.hpp"
 
 #include <fcntl.h>

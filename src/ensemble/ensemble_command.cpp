@@ -1,4 +1,4 @@
-#include "run/ensemble_command.hpp"
+#include "ensemble/ensemble_command.hpp"
 
 #include <fcntl.h>
 #include <cerrno>
@@ -12,13 +12,13 @@
 #include <thread>
 
 #include "config/config.hpp"
+#include "ensemble/ensemble_mpi.hpp"
+#include "ensemble/ensemble_plan.hpp"
+#include "ensemble/ensemble_pool.hpp"
 #include "io/atomic_file.hpp"
-#include "run/ensemble_mpi.hpp"
-#include "run/ensemble_plan.hpp"
-#include "run/ensemble_pool.hpp"
-#include "run/sweep_log_tail.hpp"
-#include "run/sweep_report.hpp"
-#include "run/sweep_run_state.hpp"
+#include "sweep/sweep_log_tail.hpp"
+#include "sweep/sweep_report.hpp"
+#include "sweep/sweep_run_state.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-#include "run/ensemble_mpi.hpp"
+#include "ensemble/ensemble_mpi.hpp"
 
 #include <cstdlib>
 #include <string>

@@ -1,4 +1,4 @@
-#include "run/sweep_results.hpp"
+#include "sweep/sweep_results.hpp"
 
 #include <fmt/format.h>
 

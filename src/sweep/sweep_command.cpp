@@ -1,4 +1,4 @@
-#include "run/sweep_command.hpp"
+#include "sweep/sweep_command.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -14,12 +14,12 @@
 #include "config/config.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot_reader.hpp"
-#include "run/sweep_log_tail.hpp"
-#include "run/sweep_plan.hpp"
-#include "run/sweep_processes.hpp"
-#include "run/sweep_report.hpp"
-#include "run/sweep_results.hpp"
-#include "run/sweep_run_state.hpp"
+#include "sweep/sweep_log_tail.hpp"
+#include "sweep/sweep_plan.hpp"
+#include "sweep/sweep_processes.hpp"
+#include "sweep/sweep_report.hpp"
+#include "sweep/sweep_results.hpp"
+#include "sweep/sweep_run_state.hpp"
 
 namespace fs = std::filesystem;
 

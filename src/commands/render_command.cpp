@@ -1,4 +1,4 @@
-#include "run/render_command.hpp"
+#include "commands/render_command.hpp"
 
 #include <fmt/format.h>
 

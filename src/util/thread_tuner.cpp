@@ -1,4 +1,4 @@
-#include "run/thread_tuner.hpp"
+#include "util/thread_tuner.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -1,4 +1,4 @@
-#include "run/report_command.hpp"
+#include "commands/report_command.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "run/sweep_plan.hpp"
+#include "sweep/sweep_plan.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>

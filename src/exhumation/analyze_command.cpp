@@ -1,4 +1,4 @@
-#include "run/analyze_command.hpp"
+#include "exhumation/analyze_command.hpp"
 
 #include <fmt/format.h>
 

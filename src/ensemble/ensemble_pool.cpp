@@ -1,4 +1,4 @@
-#include "run/ensemble_pool.hpp"
+#include "ensemble/ensemble_pool.hpp"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,8 @@
 #include <chrono>
 #include <thread>
 
-#include "run/sweep_processes.hpp"
-#include "run/sweep_report.hpp"
+#include "sweep/sweep_processes.hpp"
+#include "sweep/sweep_report.hpp"
 
 namespace orogen {
 

@@ -1,4 +1,4 @@
-#include "run/sweep_log_tail.hpp"
+#include "sweep/sweep_log_tail.hpp"
 
 #include <algorithm>
 #include <fstream>

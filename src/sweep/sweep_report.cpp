@@ -1,4 +1,4 @@
-#include "run/sweep_report.hpp"
+#include "sweep/sweep_report.hpp"
 #include "util/timestamp.hpp"
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-#include "run/sweep_run_state.hpp"
+#include "sweep/sweep_run_state.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "run/ensemble_plan.hpp"
+#include "ensemble/ensemble_plan.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
