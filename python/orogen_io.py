@@ -2,7 +2,7 @@
 
 Used by python/granular_charts.py, wedge_charts.py, ensemble_stats.py, ensemble_charts.py and
 exhumation_frames.py. The tables are read by pandas (orogen.read_csv, python/orogen/results.py:
-rows cut short by a killed run are skipped); what this module adds is what the charts need
+rows with the wrong number of fields are skipped); what this module adds is what the charts need
 on top: tables as float arrays, sweeps, a run's configuration by dotted key, snapshots.h5 frames,
 the model's surface and fits, atomic output. Import it with python/ on sys.path:
 
@@ -67,7 +67,7 @@ def _to_float(v):
 
 def read_table(path):
     """A series-format CSV (series.csv, summary.csv, profile.csv) read by orogen.read_csv
-    (pandas; rows cut short by a killed run are skipped).
+    (pandas; rows with the wrong number of fields, such as a cut last row, are skipped).
 
     Returns (columns, descriptions): columns maps each header name to a float array (NaN for
     'nan', empty or non-numeric fields), descriptions maps names to their `# name: meaning`

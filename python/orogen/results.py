@@ -49,11 +49,12 @@ def column_docs(path):
 def read_complete_rows(path):
     """The rows of a CSV with as many fields as its header, as a DataFrame.
 
-    A killed run can leave its last row cut short, and a cut row must not pass for a row with
-    missing values: pandas pads a short row with NaN, so a text-only read first (the python
-    engine gives None for a missing field, '' for an empty one) tells which rows are whole, and
-    only those are parsed (so an integer column stays integer). Rows with too many fields are
-    skipped; empty fields and `nan` are NaN; floats are parsed as Python's float() does."""
+    The program rewrites its CSVs atomically, but a file can still end in a cut row (copied or
+    synced while being written, or written by another tool), and a cut row must not pass for a
+    row with missing values: pandas pads a short row with NaN, so a text-only read first (the
+    python engine gives None for a missing field, '' for an empty one) tells which rows are
+    whole, and only those are parsed (so an integer column stays integer). Rows with too many
+    fields are skipped; empty fields and `nan` are NaN; floats parse as Python's float()."""
     options = dict(comment="#", skip_blank_lines=True, on_bad_lines="skip")
     text = pd.read_csv(path, engine="python", dtype=str, na_filter=False, **options)
     whole = text.notna().all(axis=1)

@@ -77,8 +77,8 @@ def test_wedge_charts_on_a_tiny_run(cli_wedge, tmp_path):
 
 
 def test_read_csv_keeps_whole_rows_only(tmp_path):
-    """A killed run's last row, cut short, is skipped; an empty or `nan` field is NaN (and the
-    chart scripts' orogen_io.read_table reads the same rows as float arrays)."""
+    """A last row cut short (and a row too long) is skipped; an empty or `nan` field is NaN (and
+    the chart scripts' orogen_io.read_table reads the same rows as float arrays)."""
     path = tmp_path / "series.csv"
     path.write_text("# S: shortening [h0]\n# H: height [h0]\n# n: discs\nS,H,n\n0.1,1.5,10\n\n"
                     "0.2,,11\n0.3,nan,12,99\n0.4,2.25,13\n0.5,2.5")
