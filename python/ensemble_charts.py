@@ -20,7 +20,6 @@ DIR/aggregate/GROUP with several groups) writes into its charts/ folder, atomica
 Exit 0, or 2 with a message when DIR holds no statistics.
 """
 
-import csv
 import os
 import sys
 
@@ -43,8 +42,7 @@ def table(path):
 
 
 def text_rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+    return oio.read_rows(path)[0]
 
 
 def save(fig, path):

@@ -68,9 +68,7 @@ def read_members_csv(folder):
     path = os.path.join(folder, "members.csv")
     if not os.path.isfile(path):
         raise Usage(f"{path} is missing: run `orogen ensemble` on this folder first")
-    with open(path, newline="") as f:
-        lines = [line for line in f if not line.startswith("#")]
-    return {row["name"]: row for row in csv.DictReader(lines)}
+    return {row["name"]: row for row in oio.read_rows(path)[0]}
 
 
 def read_member(folder, name):

@@ -28,7 +28,6 @@ Per run, with "after" meaning the outputs from the flux steady state on:
 """
 
 import argparse
-import csv
 import json
 import os
 import sys
@@ -37,15 +36,15 @@ import warnings
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import orogen  # noqa: E402  (the readers only: no compiled engine needed)
 import orogen_analysis as oa  # noqa: E402
 
 STEP_MIN = 0.5  # h0: a pro step-out, as python/ensemble_stats.py counts them
 
 
 def read_series(run):
-    with open(os.path.join(run, "series.csv"), newline="") as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    return {k: np.array([float(r[k]) if r[k] != "" else np.nan for r in rows]) for k in ("S", "Dp", "Dr")}
+    series = orogen.read_csv(os.path.join(run, "series.csv"))[0]
+    return {k: series[k].to_numpy(dtype=float) for k in ("S", "Dp", "Dr")}
 
 
 def slope(x, y):

@@ -34,9 +34,10 @@ os.replace):
     biaxial_friction_vs_mu.png peak and residual bulk friction angle against contact friction
     biaxial_table.md, .csv     per run: bulk friction, dilatancy, critical tapers
 
-Only numpy, matplotlib (Agg) and h5py are used (readers in python/orogen_io.py); without h5py
-the pictures of particles and final surfaces say so. Lengths are in units of the largest disc
-diameter d unless an axis says h0 (layer thickness); angles in degrees. Exit status 0, or 2
+Only numpy, pandas, matplotlib (Agg) and h5py are used (readers in python/orogen_io.py, over
+the package orogen); without h5py the pictures of particles and final surfaces say so. Lengths
+are in units of the largest disc diameter d unless an axis says h0 (layer thickness); angles in
+degrees. Exit status 0, or 2
 with a message when an argument is not a folder of the subcommand's runs.
 """
 

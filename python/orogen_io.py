@@ -1,8 +1,10 @@
-"""Readers of the files `orogen run` and `orogen sweep` write, shared by the chart scripts.
+"""Run and sweep folders for the chart scripts, on top of the orogen package's readers.
 
-Used by python/granular_charts.py and python/wedge_charts.py. Only the
-standard library, numpy and h5py (for snapshots.h5) are needed; import it with python/ on
-sys.path:
+Used by python/granular_charts.py, wedge_charts.py, ensemble_stats.py, ensemble_charts.py and
+exhumation_frames.py. The tables are read by pandas (orogen.read_csv, python/orogen/results.py:
+rows with the wrong number of fields are skipped); what this module adds is what the charts need
+on top: tables as float arrays, sweeps, a run's configuration by dotted key, snapshots.h5 frames,
+the model's surface and fits, atomic output. Import it with python/ on sys.path:
 
     import orogen_io as oio
     runs = oio.collect_runs(["runs/sweep_repose_slump", "runs/one_run"], "repose")
@@ -11,24 +13,23 @@ sys.path:
 
 What is read (docs/output-files.md, docs/sweeps.md):
 
-- series.csv, summary.csv: `# name: meaning` comment lines, a header row, numeric rows
-  (`nan` for NaN) -> read_table / read_summary.
+- series.csv, summary.csv, profile.csv: `# name: meaning` comment lines, a header row, numeric
+  rows (`nan` for NaN) -> read_table / read_summary (dicts of float arrays / floats).
 - config.toml: the resolved configuration (TOML) -> read_config, config_value("contact.mu").
 - DIR/results.csv of a sweep: comment lines, header row, one row per run (`name`, each swept
   key, `exit_status`, `render_status`, then every summary.csv column; RFC 4180 quoting) ->
-  read_results. Its run folders are DIR/runs/NAME.
+  read_results (text rows; read_rows for any such table). Its run folders are DIR/runs/NAME.
 - snapshots.h5: file attributes (format, version, n_outputs, h0, experiment, ...), groups
   output_000000 ... of which the first n_outputs are complete, each with per-disc arrays
   x, y, radius, depth0, motion, cluster_id, ... and walls (n x 4: ax, ay, bx, by) ->
-  read_frame, read_last_frame.
+  read_frame, read_last_frame (h5py; optional for everything else).
 
 Also the surface of a set of discs as the model measures it (MODEL section 8: columns of width
 2.3 mean radii, the top of the highest disc in each), the least-squares line and quadratic of a
-profile (src/analysis/profile_fit.cpp) and the critical taper of a dry Coulomb wedge
-(src/analysis/critical_taper.cpp; Dahlen 1984, MODEL section 9).
+profile (numpy.polyfit, as src/analysis/profile_fit.cpp) and the critical taper of a dry
+Coulomb wedge (src/analysis/critical_taper.cpp; Dahlen 1984, MODEL section 9).
 """
 
-import csv
 import io
 import math
 import os
@@ -37,6 +38,9 @@ import tempfile
 import tomllib
 
 import numpy as np
+import pandas as pd
+
+import orogen.results  # the pandas readers of run folders (python/orogen; no compiled engine needed)
 
 try:
     import h5py
@@ -62,35 +66,18 @@ def _to_float(v):
 
 
 def read_table(path):
-    """Reads a series-format CSV (series.csv, summary.csv).
+    """A series-format CSV (series.csv, summary.csv, profile.csv) read by orogen.read_csv
+    (pandas; rows with the wrong number of fields, such as a cut last row, are skipped).
 
     Returns (columns, descriptions): columns maps each header name to a float array (NaN for
     'nan', empty or non-numeric fields), descriptions maps names to their `# name: meaning`
-    text. Rows with the wrong number of fields are skipped."""
-    descriptions = {}
-    header = None
-    rows = []
-    with open(path, "r", encoding="utf-8") as f:
-        for line in f:
-            line = line.strip()
-            if not line:
-                continue
-            if line.startswith("#"):
-                name, sep, desc = line[1:].strip().partition(":")
-                if sep and name and " " not in name.strip():
-                    descriptions[name.strip()] = desc.strip()
-                continue
-            if header is None:
-                header = [h.strip() for h in line.split(",")]
-                continue
-            fields = line.split(",")
-            if len(fields) != len(header):
-                continue
-            rows.append([_to_float(v) for v in fields])
-    if header is None:
-        raise RunError("%s: no CSV header row" % path)
-    data = np.array(rows, dtype=float).reshape(len(rows), len(header))
-    return {name: data[:, i] for i, name in enumerate(header)}, descriptions
+    text (with its [unit])."""
+    try:
+        frame = orogen.results.read_complete_rows(path)
+    except pd.errors.EmptyDataError:
+        raise RunError("%s: no CSV header row" % path) from None
+    columns = {name: pd.to_numeric(frame[name], errors="coerce").to_numpy(dtype=float) for name in frame.columns}
+    return columns, _descriptions(path)
 
 
 def read_summary(path):
@@ -100,21 +87,28 @@ def read_summary(path):
 
 
 def read_results(path):
-    """A sweep's results.csv: (rows, header, descriptions); rows are dicts name -> text, header
-    the column names in order (name, the swept keys, exit_status, ...)."""
-    descriptions = {}
-    body = []
+    """A sweep's results.csv: (rows, header, descriptions); rows are dicts name -> text ('' for
+    an empty or missing field), header the column names in order (name, the swept keys,
+    exit_status, ...)."""
+    rows, header = read_rows(path)
+    return rows, header, _descriptions(path)
+
+
+def read_rows(path):
+    """A CSV with `#` comment lines (results.csv, members.csv, fits.csv, ...) as text, by pandas:
+    (rows: dicts name -> text, '' for an empty or missing field; header: the names in order).
+    RFC 4180 quoting; a row longer than the header keeps its first fields."""
     with open(path, "r", encoding="utf-8", newline="") as f:
-        for line in f:
-            if line.startswith("#"):
-                name, sep, desc = line[1:].strip().partition(":")
-                if sep and name and " " not in name.strip():
-                    descriptions[name.strip()] = desc.strip()
-                continue
-            body.append(line)
-    reader = csv.DictReader(io.StringIO("".join(body)))
-    rows = [{k: (v if v is not None else "") for k, v in row.items() if k is not None} for row in reader]
-    return rows, list(reader.fieldnames or []), descriptions
+        body = "".join(line for line in f if not line.startswith("#"))  # not comment="#": '#' may be in a quoted field
+    header = list(pd.read_csv(io.StringIO(body), nrows=0).columns)
+    frame = pd.read_csv(io.StringIO(body), dtype=str, keep_default_na=False, engine="python",
+                        on_bad_lines=lambda fields: fields[: len(header)])
+    return frame.fillna("").to_dict("records"), header
+
+
+def _descriptions(path):
+    units, meanings = orogen.results.column_docs(path)
+    return {name: "%s [%s]" % (text, units[name]) if name in units else text for name, text in meanings.items()}
 
 
 # --------------------------------------------------------------------------------------------
@@ -344,19 +338,13 @@ def fit_line(x, y):
     x = np.asarray(x, dtype=float)
     y = np.asarray(y, dtype=float)
     n = x.size
-    if n < 3:
+    if n < 3 or np.ptp(x) <= 0:
         return None
-    mx, my = x.mean(), y.mean()
-    sxx = float(np.sum((x - mx) ** 2))
-    if sxx <= 0:
-        return None
-    slope = float(np.sum((x - mx) * (y - my)) / sxx)
-    intercept = float(my - slope * mx)
-    res = y - (intercept + slope * x)
-    ss_res = float(np.sum(res ** 2))
-    syy = float(np.sum((y - my) ** 2))
+    slope, intercept = (float(c) for c in np.polyfit(x, y, 1))
+    ss_res = float(np.sum((y - (intercept + slope * x)) ** 2))
+    syy = float(np.sum((y - y.mean()) ** 2))
     x_lo, x_hi = float(x.min()), float(x.max())
-    half = max(0.5 * (x_hi - x_lo), 1e-12)
+    mx, half = x.mean(), max(0.5 * (x_hi - x_lo), 1e-12)
     q2, q1, _ = np.polyfit((x - mx) / half, y, 2)
     slope_lo = (q1 + 2 * q2 * (x_lo - mx) / half) / half
     slope_hi = (q1 + 2 * q2 * (x_hi - mx) / half) / half

@@ -7,7 +7,8 @@ Shared by wedge_charts.py (one run's H(S)) and ensemble_stats.py (an ensemble's 
     simple_model_height(s, a, b)    eq. 5.4, H/h0 from the tapers alpha, beta [deg]
     simple_model_coefficient(a, b)  the coefficient C of eq. 5.4
 
-Only numpy and math; scipy is not needed (the offset search is a golden-section search).
+The fits are numpy's least squares (numpy.polyfit); the offset search is a golden-section
+search on 1 - R^2 (a bracket widened by hand: scipy's minimisers need one to start from).
 """
 
 import math
@@ -29,18 +30,16 @@ def power_law_fit(s, h, s_min=0.5):
     if n < 3:
         return None
     lx, ly = np.log(s[ok]), np.log(h[ok])
-    mx, my = lx.mean(), ly.mean()
-    sxx = float(np.sum((lx - mx) ** 2))
-    if sxx <= 0:
+    if np.ptp(lx) <= 0:
         return None
-    b = float(np.sum((lx - mx) * (ly - my)) / sxx)
-    c = float(my - b * mx)
-    resid = ly - (c + b * lx)
-    ss_res = float(np.sum(resid ** 2))
-    ss_tot = float(np.sum((ly - my) ** 2))
-    sigma2 = ss_res / (n - 2) if n > 2 else 0.0
-    b_se = math.sqrt(sigma2 / sxx)
-    c_se = math.sqrt(sigma2 * (1.0 / n + mx * mx / sxx))
+    # Least squares by numpy; cov: the coefficients' covariance scaled by the residual variance
+    # ss_res / (n - 2), so its diagonal holds the squared standard errors of b and log a.
+    (b, c), cov = np.polyfit(lx, ly, 1, cov=True)
+    b, c = float(b), float(c)
+    ss_res = float(np.sum((ly - (c + b * lx)) ** 2))
+    ss_tot = float(np.sum((ly - ly.mean()) ** 2))
+    sigma2 = ss_res / (n - 2)
+    b_se, c_se = math.sqrt(cov[0, 0]), math.sqrt(cov[1, 1])
     a = math.exp(c)
     r2 = 1.0 - ss_res / ss_tot if ss_tot > 0 else 1.0
     return dict(a=a, a_se=a * c_se, log_a=c, log_a_se=c_se, b=b, b_se=b_se, r2=r2, n=n, s_min=s_min,

@@ -62,17 +62,21 @@ def retreat_rate(s, p, events):
     p = np.asarray(p, dtype=float)
     bounds = [0] + [e["first"] for e in events] + [p.size]
     starts = [0] + [e["last"] for e in events]
-    num = den = 0.0
+    stretches = []  # (s, p) of each stretch with at least 2 finite outputs
     for k, start in enumerate(starts):
-        end = bounds[k + 1]
-        ss, pp = s[start:end], p[start:end]
+        ss, pp = s[start:bounds[k + 1]], p[start:bounds[k + 1]]
         ok = np.isfinite(ss) & np.isfinite(pp)
-        if ok.sum() < 2:
-            continue
-        ss, pp = ss[ok], pp[ok]
-        num += float(np.sum((ss - ss.mean()) * (pp - pp.mean())))
-        den += float(np.sum((ss - ss.mean()) ** 2))
-    return num / den if den > 0 else float("nan")
+        if ok.sum() >= 2:
+            stretches.append((ss[ok], pp[ok]))
+    if not stretches or all(np.ptp(ss) <= 0 for ss, _ in stretches):
+        return float("nan")
+    # One common slope, one intercept per stretch: columns s, then an indicator per stretch.
+    sizes = [len(ss) for ss, _ in stretches]
+    design = np.zeros((sum(sizes), 1 + len(stretches)))
+    design[:, 0] = np.concatenate([ss for ss, _ in stretches])
+    design[np.arange(sum(sizes)), 1 + np.repeat(np.arange(len(stretches)), sizes)] = 1.0
+    coef = np.linalg.lstsq(design, np.concatenate([pp for _, pp in stretches]), rcond=None)[0]
+    return float(coef[0])
 
 
 def cycles(s, time, front, side, step_min=0.5):

@@ -15,8 +15,9 @@ atomically: a temporary file in OUTDIR, then os.replace):
     slip.png         fraction of basal contacts at the Coulomb limit against S (stages of growth)
     summary.json     per run: final S and H, fitted exponent, late tapers, retro accretion onset
 
-Several runs are overlaid, one colour per run. Only numpy, matplotlib (Agg) and h5py are used;
-without h5py the topography chart says so instead of drawing the surface.
+Several runs are overlaid, one colour per run. Only numpy, pandas (the tables, through
+orogen_io), matplotlib (Agg) and h5py are used; without h5py the topography chart says so
+instead of drawing the surface.
 
 Conventions: lengths are in units of h0 and x is measured from the S-point (x = 0), as in
 series.csv. The program reports a front as exactly 0 (the S-point) while no disc is above the

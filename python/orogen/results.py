@@ -7,8 +7,12 @@
     r.snapshots                       # xarray Dataset (output x particle), read lazily
     r.output(-1)                      # one output, `particle` = stable disc id
     r.removals, r.summary, r.analysis # removals.csv, summary.csv, analysis.h5 (None where absent)
+
+The CSV readers need pandas only (h5py is imported when snapshots are read), so the chart
+scripts read tables through read_csv on any machine with Debian's python3-pandas.
 """
 
+import io
 import re
 import tomllib
 from functools import cached_property
@@ -17,7 +21,6 @@ from pathlib import Path
 import pandas as pd
 import xarray as xr
 
-from .snapshots import open_snapshots, read_output
 
 _COLUMN_DOC = re.compile(r"^#\s*(\S+):\s*(.*?)\s*(?:\[([^\]]*)\])?\s*$")
 
@@ -25,6 +28,11 @@ _COLUMN_DOC = re.compile(r"^#\s*(\S+):\s*(.*?)\s*(?:\[([^\]]*)\])?\s*$")
 def read_csv(path):
     """A series-format CSV (`# name: meaning [unit]` lines, a header row, rows; `nan` for NaN)
     as (DataFrame, {column: unit}, {column: meaning})."""
+    return (read_complete_rows(path),) + column_docs(path)
+
+
+def column_docs(path):
+    """The `# name: meaning [unit]` lines above a CSV's header as ({column: unit}, {column: meaning})."""
     units, meanings = {}, {}
     with open(path, encoding="utf-8") as f:
         for line in f:
@@ -35,8 +43,23 @@ def read_csv(path):
                 meanings[m.group(1)] = m.group(2)
                 if m.group(3) is not None:
                     units[m.group(1)] = m.group(3)
-    frame = pd.read_csv(path, comment="#")
-    return frame, units, meanings
+    return units, meanings
+
+
+def read_complete_rows(path):
+    """The rows of a CSV with as many fields as its header, as a DataFrame.
+
+    The program rewrites its CSVs atomically, but a file can still end in a cut row (copied or
+    synced while being written, or written by another tool), and a cut row must not pass for a
+    row with missing values: pandas pads a short row with NaN, so a text-only read first (the
+    python engine gives None for a missing field, '' for an empty one) tells which rows are
+    whole, and only those are parsed (so an integer column stays integer). Rows with too many
+    fields are skipped; empty fields and `nan` are NaN; floats parse as Python's float()."""
+    options = dict(comment="#", skip_blank_lines=True, on_bad_lines="skip")
+    text = pd.read_csv(path, engine="python", dtype=str, na_filter=False, **options)
+    whole = text.notna().all(axis=1)
+    source = path if whole.all() else io.StringIO(text[whole].to_csv(index=False))
+    return pd.read_csv(source, float_precision="round_trip", **options)
 
 
 class RunFolder:
@@ -87,10 +110,12 @@ class RunFolder:
     @cached_property
     def snapshots(self):
         """Every output's per-disc fields, lazily (orogen.snapshots.open_snapshots)."""
+        from .snapshots import open_snapshots  # h5py: only when snapshots are asked for
         return open_snapshots(self.path)
 
     def output(self, k=-1):
         """Output k as a Dataset indexed by stable disc id."""
+        from .snapshots import read_output
         return read_output(self.path, k)
 
     @cached_property

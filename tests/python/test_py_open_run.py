@@ -74,3 +74,20 @@ def test_wedge_charts_on_a_tiny_run(cli_wedge, tmp_path):
                            str(tmp_path / "charts")], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     assert (tmp_path / "charts" / "summary.json").exists() and list((tmp_path / "charts").glob("*.png"))
+
+
+def test_read_csv_keeps_whole_rows_only(tmp_path):
+    """A last row cut short (and a row too long) is skipped; an empty or `nan` field is NaN (and
+    the chart scripts' orogen_io.read_table reads the same rows as float arrays)."""
+    path = tmp_path / "series.csv"
+    path.write_text("# S: shortening [h0]\n# H: height [h0]\n# n: discs\nS,H,n\n0.1,1.5,10\n\n"
+                    "0.2,,11\n0.3,nan,12,99\n0.4,2.25,13\n0.5,2.5")
+    frame, units, meanings = orogen.read_csv(path)
+    assert list(frame["S"]) == [0.1, 0.2, 0.4] and frame["n"].dtype.kind == "i"
+    assert np.isnan(frame["H"][1]) and frame["H"][2] == 2.25
+    assert units == {"S": "h0", "H": "h0"} and meanings["n"] == "discs"
+    sys.path.insert(0, str(REPO / "python"))
+    import orogen_io
+    columns, descriptions = orogen_io.read_table(path)
+    assert columns["S"].tolist() == [0.1, 0.2, 0.4] and columns["n"].dtype == float
+    assert descriptions["H"] == "height [h0]"
