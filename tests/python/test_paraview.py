@@ -43,7 +43,17 @@ def paraview_command():
     if xvfb is None:
         return None, "no DISPLAY and no xvfb-run: install Debian's xvfb and xauth to run this test"
     # A 24-bit screen: the default 8-bit one of xvfb-run offers OpenGL no visual on some hosts.
-    return [xvfb, "-a", "-s", "-screen 0 1280x1024x24", pv], None
+    # The display number is chosen per try (run_paraview): `-a` races with other jobs' xvfb-run,
+    # two servers then pick the same number and the loser's window is refused.
+    return [xvfb, "-s", "-screen 0 1280x1024x24", pv], None
+
+
+def with_display_number(command, attempt):
+    """The xvfb-run command with a server number of this process and try, unlikely to be taken."""
+    if not command[0].endswith("xvfb-run"):
+        return command
+    number = 1000 + (os.getpid() * 7 + attempt) % 50000
+    return command[:1] + ["-n", str(number)] + command[1:]
 
 
 def run_paraview(command, run_dir, png):
@@ -51,8 +61,8 @@ def run_paraview(command, run_dir, png):
     signal (an X server that xvfb-run started beside other jobs' may not take the window);
     any other failure, or three, fail the test with pvpython's output."""
     failures = []
-    for _ in range(3):
-        done = subprocess.run(command + [SCRIPT, run_dir, png], capture_output=True, text=True, timeout=300)
+    for attempt in range(3):
+        done = subprocess.run(with_display_number(command, attempt) + [SCRIPT, run_dir, png], capture_output=True, text=True, timeout=300)
         lines = [l for l in done.stdout.splitlines() if l.startswith("OROGEN_PARAVIEW ")]
         if done.returncode == 0 and lines:
             return json.loads(lines[-1][len("OROGEN_PARAVIEW "):])
