@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """A granular column collapse whose geometry is written in Python (run.experiment = "scripted").
 
-The setup function builds everything: a box of walls (floor, left wall, far right wall) and a
-column of discs against the left wall, held by a gate; the discs sit on an offset (hexagonal)
-grid with radii drawn by a seeded numpy generator, so the run is the same every time. A hook
-opens the gate once the column has settled a little (a rule of the model time alone, so a
-stopped run resumes bit for bit); the column slumps into a heap along the floor. The run reports
-the runout and the mean slope of the deposit.
+The setup function builds everything: a box of walls (floor, left wall, far right wall), a
+bumpy base of pinned discs along the floor (discs roll without resistance, so on a flat floor
+they would roll to the far wall), and a column of discs against the left wall, held by a gate;
+the discs sit on an offset (hexagonal) grid with radii drawn by a seeded numpy generator, so the
+run is the same every time. A hook opens the gate once the column has settled a little (a rule
+of the model time alone, so a stopped run resumes bit for bit); the column slumps into a heap
+along the base. The run reports the runout and the mean slope of the deposit.
 
 The C++ side is the plain `scripted` experiment: an empty world at the start, World::advance()
 steps until scripted.duration, outputs and checkpoints as every run. A resume does not call the
@@ -26,23 +27,29 @@ import orogen
 D_MIN = 0.8  # smallest disc diameter made here; particles.d_min, so the time step suits it [d]
 
 
+BASE = 1.0  # top of the bumpy base [d]
+
+
 def column_setup(width, height, box_length, seed):
-    """The setup function: walls and a column `width` x `height` [d] of discs of diameters in
-    [D_MIN, 1] on an offset grid of spacing 1 (neighbours never overlap)."""
+    """The setup function: walls, the pinned base, and a column `width` x `height` [d] (above
+    the base) of discs of diameters in [D_MIN, 1] on an offset grid of spacing 1 (neighbours
+    never overlap)."""
 
     def setup(world):
-        top = 2.0 * height
+        top = BASE + 2.0 * height
         # Walls are segments touched from either side; they overlap at the corners (as the C++
         # box of src/packing does), so no disc slips out between two ends.
         world.add_wall("floor", -1.0, 0.0, box_length + 1.0, 0.0, friction="rough", mu=0.5)
         world.add_wall("left", 0.0, -1.0, 0.0, top)
         world.add_wall("right", box_length, -1.0, box_length, top)
         world.add_wall("gate", width, 0.0, width, top)
+        base = [world.add_disc(0.5 + i, 0.5 * BASE, 0.5 * BASE) for i in range(int(box_length))]
+        world.pin(base)  # kinematic at rest: a rough floor that stops rolling discs
         rng = np.random.default_rng(seed)
         row_height = math.sqrt(3.0) / 2.0
         for row in range(int((height - 1.0) / row_height) + 1):
             shift = 0.5 * (row % 2)
-            y = 0.5 + row * row_height
+            y = BASE + 0.5 + row * row_height
             for col in range(int(width - shift)):
                 world.add_disc(0.5 + shift + col, y, 0.5 * rng.uniform(D_MIN, 1.0))
 
@@ -59,12 +66,22 @@ def open_gate_at(time):
     return hook
 
 
-def deposit(run, width):
-    """(runout beyond the column's foot, height at the wall, mean slope in degrees) of the last output."""
-    last = run.series.iloc[-1]
-    runout = float(last["x_max"]) - width
-    height = float(last["y_max"])
-    return runout, height, math.degrees(math.atan2(height, float(last["x_max"])))
+def deposit(run, width, gap=0.5):
+    """(discs in the column, runout beyond the column's foot, discs that rolled away, deposit
+    height, mean slope in degrees) of the last output's free discs (the base is pinned). The
+    deposit's front is where, from the wall, the discs first leave a gap wider than `gap` [d]:
+    single discs rolling ahead do not count."""
+    last = run.output(-1)
+    free = last["motion"].values == 0
+    x, y, r = (last[k].values[free] for k in ("x", "y", "radius"))
+    order = np.argsort(x)
+    front, kept = 0.0, 0
+    for i in order:
+        if x[i] - r[i] > front + gap:
+            break
+        front, kept = max(front, x[i] + r[i]), kept + 1
+    height = float(np.max(y + r)) - BASE
+    return int(free.sum()), front - width, int(free.sum()) - kept, height, math.degrees(math.atan2(height, front))
 
 
 def main(argv=None):
@@ -83,11 +100,10 @@ def main(argv=None):
     orogen.run(config, out=args.out, setup=column_setup(width, height, box_length, args.seed),
                hook=open_gate_at(settle), every=50)
     r = orogen.open_run(args.out)
-    runout, h, slope = deposit(r, width)
-    aspect = height / width
-    print(f"{args.out}: column {width:g} x {height:g} d (aspect {aspect:.3g}), {int(r.series['n_discs'].iloc[0])} "
-          f"discs: runout {runout:.3g} d beyond the column ({runout / width:.3g} column widths), deposit "
-          f"{h:.3g} d high at the wall, mean slope {slope:.3g} deg")
+    n, runout, strays, h, slope = deposit(r, width)
+    print(f"{args.out}: column {width:g} x {height:g} d (aspect {height / width:.3g}), {n} discs: runout "
+          f"{runout:.3g} d beyond the column ({runout / width:.3g} column widths; {strays} discs rolled further), "
+          f"deposit {h:.3g} d high, mean slope {slope:.3g} deg")
 
 
 if __name__ == "__main__":

@@ -152,3 +152,13 @@ def test_series_columns_are_documented(scripted_run):
     from test_output_docs import csv_columns, documented_columns
     header, meanings = csv_columns(str(scripted_run / "series.csv"))
     assert meanings == documented_columns("series.csv", "scripted") and header == list(meanings)
+
+
+def test_branch_needs_a_checkpointed_output(scripted_run, tmp_path):
+    # A replay to output 2 would need the setup function; the finished run's checkpoint holds output 5.
+    with pytest.raises(orogen.RunError) as e:
+        orogen.run(TINY_SCRIPTED, out=tmp_path / "b2", from_run=f"{scripted_run}:2")
+    assert e.value.code == 2
+    rougher = {**TINY_SCRIPTED, "contact": {"mu": 0.5}}  # a key a branch may change
+    assert orogen.run(rougher, out=tmp_path / "b5", from_run=f"{scripted_run}:5") == orogen.FINISHED
+    assert orogen.open_run(tmp_path / "b5").series["n_discs"].iloc[0] == 30  # the geometry came with it
