@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "config/config.hpp"
+#include "experiments/experiment.hpp"
 
 namespace orogen::py {
 
@@ -13,6 +14,8 @@ void bind_config(pyb::module_& m) {
       .def_static("load", &Config::load, pyb::arg("file"), pyb::arg("overrides"),
                   "A TOML file (or None) and section.key=value overrides, checked as `orogen run` checks them")
       .def("to_toml", &Config::to_toml, "the resolved configuration, every key, as config.toml holds it")
+      .def("check_experiment", [](const Config& c) { (void)make_experiment(c); },
+           "the experiment's cross-key checks (ConfigError), as `orogen run` makes them before writing anything")
       .def("source_of", &Config::source_of, pyb::arg("key"));
 }
 

@@ -6,6 +6,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "bindings.hpp"
 #include "run/runner.hpp"
@@ -18,9 +20,20 @@ struct RunResult {
   std::optional<pyb::error_already_set> error;  // what the hook raised (the run stopped there)
 };
 
+// Calls fn(world) with a handle valid during the call only; a kept handle must not outlive it.
+template <class Fn>
+auto call_with_world(Fn&& fn, World& w, const Experiment& e) {
+  pyb::object handle = pyb::cast(WorldHandle{&w, &e, pyb::none()});
+  struct Clear {
+    pyb::object& h;
+    ~Clear() { h.cast<WorldHandle&>().world = nullptr; }
+  } clear{handle};
+  return fn(handle);
+}
+
 RunResult run(std::optional<std::filesystem::path> config, std::vector<std::string> overrides,
               std::filesystem::path out, int threads, bool resume, std::string from, pyb::object hook,
-              std::uint64_t every) {
+              std::uint64_t every, pyb::object setup) {
   RunOptions opt;
   opt.config = std::move(config);
   opt.overrides = std::move(overrides);
@@ -33,16 +46,24 @@ RunResult run(std::optional<std::filesystem::path> config, std::vector<std::stri
     opt.between_every = every;
     opt.between_steps = [&hook, &result](World& w, const Experiment& e) {
       pyb::gil_scoped_acquire gil;
-      pyb::object handle = pyb::cast(WorldHandle{&w, &e, pyb::none()});
-      bool stop = false;
       try {
-        stop = pyb::bool_(hook(handle));
+        return call_with_world([&hook](pyb::object h) { return bool(pyb::bool_(hook(h))); }, w, e);
       } catch (pyb::error_already_set& err) {
         result.error = std::move(err);  // stop with a checkpoint, re-raised in Python
-        stop = true;
+        return true;
       }
-      handle.cast<WorldHandle&>().world = nullptr;  // a kept handle must not outlive the call
-      return stop;
+    };
+  }
+  if (!setup.is_none()) {
+    opt.before_first_output = [&setup, &result](World& w, const Experiment& e) {
+      pyb::gil_scoped_acquire gil;
+      try {
+        call_with_world([&setup](pyb::object h) { setup(h); }, w, e);
+      } catch (pyb::error_already_set& err) {
+        const std::string what = err.what();
+        result.error = std::move(err);  // re-raised in Python; the folder is released as after any failed set-up
+        throw std::runtime_error("the setup function raised: " + what);
+      }
     };
   }
   {
@@ -59,16 +80,17 @@ void bind_run(pyb::module_& m) {
   m.def(
       "run",
       [](std::optional<std::filesystem::path> config, std::vector<std::string> overrides, std::filesystem::path out,
-         int threads, bool resume, std::string from, pyb::object hook, std::uint64_t every) {
+         int threads, bool resume, std::string from, pyb::object hook, std::uint64_t every, pyb::object setup) {
         RunResult r = run(std::move(config), std::move(overrides), std::move(out), threads, resume, std::move(from),
-                          std::move(hook), every);
+                          std::move(hook), every, std::move(setup));
         if (r.error) throw std::move(*r.error);
         return r.exit_code;
       },
       pyb::arg("config"), pyb::arg("overrides"), pyb::arg("out"), pyb::arg("threads") = -1,
       pyb::arg("resume") = false, pyb::arg("from_") = "", pyb::arg("hook") = pyb::none(), pyb::arg("every") = 0,
+      pyb::arg("setup") = pyb::none(),
       "runs as `orogen run` does; returns its exit code (0 done, 1 I/O, 2 bad input, 3 unstable, 4 stopped by "
-      "the hook, 128+signal)");
+      "the hook, 128+signal); setup(world) is called once before output 0 of a run that starts from its set-up");
 }
 
 }  // namespace orogen::py

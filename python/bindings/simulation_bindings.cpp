@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "config/config.hpp"
+#include "experiments/time_step_config.hpp"
 #include "io/binary_archive.hpp"
 #include "world/world_archive.hpp"
 
@@ -85,6 +86,8 @@ class Simulation {
 void bind_simulation(pyb::module_& m) {
   pyb::class_<Simulation>(m, "Simulation")
       .def(pyb::init<Config>(), pyb::arg("config"))
+      .def("check_setup", [](Simulation& s) { check_world_time_step(s.config(), s.world()); },
+           "after a setup function: ConfigError if its discs make the time step unstable")
       .def("step", &Simulation::step, pyb::arg("n") = 1, "up to n steps; returns how many were taken")
       .def("advance_to", &Simulation::advance_to, pyb::arg("key"), pyb::arg("value"))
       .def("save", &Simulation::save, pyb::arg("file"))

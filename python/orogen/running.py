@@ -4,12 +4,18 @@ Python hook may act between steps.
     orogen.run({"wedge": {"s_end": 2}}, out="runs/a")                   # as the CLI
     orogen.run("examples/wedge.toml", out="runs/b", hook=erode, every=100)
     orogen.resume("runs/b", hook=erode, every=100)                       # as --resume
+    orogen.run({"run": {"experiment": "scripted"}, "scripted": {"duration": 50}}, out="runs/c",
+               setup=build_box)                                         # geometry from Python
 
 The hook is called as hook(world) after each step whose number is a multiple of `every`, before
 that step's output (so outputs show what it did); between calls the engine runs in C++ without
 the GIL. It changes the world through the World API; returning True stops the run with a
 checkpoint (orogen.resume continues it). What the hook depends on must live in the world or be
 derived from the step number, so that a resumed run calls it alike.
+
+`setup` is called as setup(world) once, after the experiment's own set-up and before output 0:
+it builds the geometry of a scripted experiment (run.experiment = "scripted" starts from an empty
+world) or adds to any other. A resume does not call it: the checkpoint holds what it built.
 """
 
 import signal
@@ -43,22 +49,26 @@ def _result(code, out):
     raise RunError(code, out)
 
 
-def run(config=None, out="out", set=None, hook=None, every=100, threads=None, from_run=None):
+def run(config=None, out="out", set=None, hook=None, every=100, threads=None, from_run=None, setup=None):
     """Runs any experiment as `orogen run CONFIG --out OUT --set ...` does (config a TOML path,
-    a dict or None; set a dict of overrides; from_run "RUN[:OUTPUT]" as --from). Returns
-    "finished", or "stopped" when the hook asked. Raises ConfigError before anything is written,
-    RunError on the CLI's failures, and what the hook raised (the run checkpointed there)."""
+    a dict or None; set a dict of overrides; from_run "RUN[:OUTPUT]" as --from; setup(world)
+    builds on the set-up before output 0). Returns "finished", or "stopped" when the hook asked.
+    Raises ConfigError before anything is written, RunError on the CLI's failures, and what the
+    hook or setup raised (a hook's run checkpointed there; a setup's folder is left empty)."""
     file, settings = split(config)
-    load_config(config, set)  # a ConfigError here, as a Python exception, before any file
+    # ConfigErrors here, as Python exceptions, before any file: the keys, then the experiment's
+    # cross-key checks (a scripted run without scripted.duration).
+    load_config(config, set).check_experiment()
     args = overrides(settings) + overrides(set)
     code = _orogen.run(file, args, Path(out), -1 if threads is None else int(threads), False,
-                       from_run or "", hook, int(every) if hook else 0)
+                       from_run or "", hook, int(every) if hook else 0, setup)
     return _result(code, out)
 
 
-def resume(out, set=None, hook=None, every=100, threads=None):
-    """Continues a run folder as `orogen run --resume OUT` (set: extension keys only)."""
+def resume(out, set=None, hook=None, every=100, threads=None, setup=None):
+    """Continues a run folder as `orogen run --resume OUT` (set: extension keys only). `setup`
+    is called only when the run was stopped before its first checkpoint and starts again."""
     load_config(Path(out) / "config.toml", set)
     code = _orogen.run(None, overrides(set), Path(out), -1 if threads is None else int(threads), True, "",
-                       hook, int(every) if hook else 0)
+                       hook, int(every) if hook else 0, setup)
     return _result(code, out)

@@ -6,6 +6,8 @@
     x = sim.world.x            # a numpy view, no copy
     with sim.edit() as w:      # writable views; the world is told on leaving
         w.array("vx", writable=True)[:] = 0
+    sim = orogen.Simulation({"run": {"experiment": "scripted"}, "scripted": {"duration": 20}},
+                            setup=build_column)   # setup(world) before the first step
 """
 
 import contextlib
@@ -15,9 +17,15 @@ from .config import load_config
 
 
 class Simulation:
-    def __init__(self, config=None, set=None):
+    def __init__(self, config=None, set=None, setup=None):
+        """`setup(world)`, if given, builds on the experiment's set-up before the first step, as
+        orogen.run's does: the geometry of a scripted experiment. ConfigError if its discs are
+        too small for the configured time step (particles.d_min)."""
         self.config = load_config(config, set)
         self._sim = _orogen.Simulation(self.config)
+        if setup is not None:
+            setup(self.world)  # as orogen.run calls it, so the two stay bit for bit alike
+            self._sim.check_setup()
 
     @property
     def world(self):

@@ -55,9 +55,10 @@ std::string_view KeySpec::key() const {
 
 const std::vector<KeySpec>& schema() {
   static const std::vector<KeySpec> table = {
-      text("run.experiment", "wedge", {"packing", "wedge", "repose", "singly_vergent", "biaxial"},
+      text("run.experiment", "wedge", {"packing", "wedge", "repose", "singly_vergent", "biaxial", "scripted"},
            "what the run does: settle a packing, grow a doubly-vergent wedge, an angle of repose "
-           "experiment, a singly-vergent critical wedge, or a biaxial test of bulk friction"),
+           "experiment, a singly-vergent critical wedge, a biaxial test of bulk friction, or a scripted "
+           "run whose geometry a Python setup function builds (docs/python.md)"),
       integer("run.seed", 1, ge(0), le(2147483647), "seed of the packing generator"),
       integer("run.threads", 0, ge(0), le(kMaxThreads), "OpenMP threads, 0 = all cores"),
       boolean("run.adapt_threads", true,
@@ -185,6 +186,10 @@ const std::vector<KeySpec>& schema() {
            "stress-controlled walls move at gain x stress error x d / (k_n dt): the fraction of the error "
            "removed per step against a rigid sample with one contact per d of wall; unstable "
            "from about 2.5 [-]"),
+      // [scripted]: an empty world built by a Python setup function (docs/python.md)
+      real("scripted.duration", 0.0, ge(0), none,
+           "model time the run lasts; required (0, the default, is refused) [sqrt(d/g)]"),
+      integer("scripted.outputs", 20, ge(1), le(kMaxOutputs), "output steps over the run"),
 
       boolean("analysis.in_run", false,
               "wedge runs: run the exhumation analysis (orogen analyze, docs/exhumation.md) after every output; "

@@ -10,6 +10,7 @@
 #include "experiments/experiment.hpp"
 #include "experiments/packing_experiment.hpp"
 #include "experiments/repose_experiment.hpp"
+#include "experiments/scripted_experiment.hpp"
 #include "experiments/singly_vergent_experiment.hpp"
 #include "experiments/wedge_experiment.hpp"
 
@@ -27,6 +28,7 @@ constexpr std::array kExperiments{
     ExperimentEntry{"repose", make_repose_experiment},
     ExperimentEntry{"singly_vergent", make_singly_vergent_experiment},
     ExperimentEntry{"biaxial", make_biaxial_experiment},
+    ExperimentEntry{"scripted", make_scripted_experiment},
 };
 
 }  // namespace

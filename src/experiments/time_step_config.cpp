@@ -1,5 +1,8 @@
 #include "experiments/time_step_config.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <numbers>
 
 #include "config/config.hpp"
@@ -16,6 +19,18 @@ ConfigTimeStep config_time_step(const Config& c) {
   t.given = dt > 0;
   t.dt = t.given ? dt : c.get_float("time.dt_fraction") * t.limit;
   return t;
+}
+
+void check_world_time_step(const Config& c, const World& w) {
+  if (w.dt <= w.stable_dt()) return;
+  const auto& r = w.discs.radius;
+  const double d_small = 2.0 * *std::min_element(r.begin(), r.end());
+  throw config_error(c.sources_of({"particles.d_min", "time.dt"}), "particles.d_min",
+                     fmt::format("{}", c.get_float("particles.d_min")),
+                     fmt::format("the setup built discs down to diameter {:.6g}, for which the time step dt = {:.6g} "
+                                 "exceeds the stability limit {:.6g}: set particles.d_min to at most {:.6g} (the "
+                                 "time step follows it) or give a smaller time.dt; from {}",
+                                 d_small, w.dt, w.stable_dt(), d_small, c.describe({"particles.d_min", "time.dt"})));
 }
 
 }  // namespace orogen

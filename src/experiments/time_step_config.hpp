@@ -6,6 +6,7 @@
 namespace orogen {
 
 class Config;
+struct World;
 
 struct ConfigTimeStep {
   double m_min = 0;      // mass of the smallest disc, pi d_min^2 / 4 (unit density)
@@ -15,5 +16,9 @@ struct ConfigTimeStep {
 };
 
 ConfigTimeStep config_time_step(const Config& config);
+
+// Refuses (ConfigError naming particles.d_min) a world whose lightest disc makes the time step
+// unstable: discs built outside the experiment (a Python setup function) below particles.d_min.
+void check_world_time_step(const Config& config, const World& world);
 
 }  // namespace orogen

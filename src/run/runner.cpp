@@ -18,6 +18,7 @@
 #include "exhumation/analyze_command.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/spec_from_config.hpp"
+#include "experiments/time_step_config.hpp"
 #include "io/atomic_file.hpp"
 #include "io/csv_series.hpp"
 #include "io/snapshot_reader.hpp"
@@ -85,6 +86,13 @@ class Run {
   void setup() {
     apply_engine_config(config_, world_);
     exp_->setup(world_);
+  }
+
+  // The user's additions to the set-up (RunOptions::before_first_output), then the check that
+  // the time step still suits the discs they made: still nothing is written.
+  void build_on_setup(const BeforeFirstOutput& fn) {
+    fn(world_, *exp_);
+    check_world_time_step(config_, world_);
   }
 
   // Writes output 0 and a checkpoint at once, so that from here on a killed run resumes.
@@ -482,6 +490,10 @@ void build_branch(Run& run, const BranchSource& source, const fs::path& out) {
     throw BranchError(fmt::format("--from {}: that run is itself a branch (of {}), which a replay cannot rebuild; "
                                   "branch from its checkpointed output instead",
                                   source.text(), it->second));
+  if (source.config.get_string("run.experiment") == "scripted")
+    throw BranchError(fmt::format("--from {}: a scripted run's geometry was built by its setup function, which a "
+                                  "replay cannot call; branch from its checkpointed output instead",
+                                  source.text()));
   Run replay(source.config, source.dir, make_experiment(source.config));
   replay.replay_to(source.output);
   const fs::path state = out / "branch_state.bin";
@@ -560,8 +572,12 @@ int run_command(const RunOptions& opt) {
       run.load_checkpoint(!opt.overrides.empty());
     } else {
       try {
-        if (source) build_branch(run, *source, opt.out);
-        else run.setup();
+        if (source) {
+          build_branch(run, *source, opt.out);
+        } else {
+          run.setup();
+          if (opt.before_first_output) run.build_on_setup(opt.before_first_output);
+        }
       } catch (const InstabilityError& e) {
         if (!opt.resume) release_new_run(opt, lock);
         std::cerr << "error: the set-up became unstable: " << e.what() << "\n";

@@ -17,6 +17,12 @@ class Experiment;
 // change the world through its API; returning true stops the run like SIGTERM, with a checkpoint.
 using BetweenSteps = std::function<bool(World&, const Experiment&)>;
 
+// A function that builds on the world of a run that starts from its set-up (the Python
+// package's `setup`, the geometry of a scripted experiment): called once after the
+// experiment's setup and before output 0. Never on a resume from a checkpoint (that holds what
+// it built) nor for a branch (its state is the source's).
+using BeforeFirstOutput = std::function<void(World&, const Experiment&)>;
+
 struct RunOptions {
   std::optional<std::filesystem::path> config;  // none: the built-in default
   std::vector<std::string> overrides;           // "section.key=value"
@@ -27,6 +33,7 @@ struct RunOptions {
   std::int64_t abort_after_outputs = 0;         // test hook: _Exit(137) once this many outputs are written
   BetweenSteps between_steps;                   // none: the CLI's run, untouched
   std::uint64_t between_every = 0;              // called after steps that are multiples of this, before their output
+  BeforeFirstOutput before_first_output;        // none: the CLI's run, untouched
 };
 
 // run_command's exit code when between_steps asked the run to stop (it can be resumed).
