@@ -20,24 +20,42 @@ RAW = ["config.toml", "series.csv", "summary.csv", "run.log", "removals.csv", "a
        "packing.h5", "sweep.failed"]
 
 
+_PIECE_START = re.compile(r"^\[[^]]*\] orogen \S+ (run|resume) in ")
+
+
+def _wall_seconds(lines):
+    """Seconds the run ran: the first to the last timestamp of each piece of run.log (a run and
+    each of its resumes), summed, so that a resumed run counts every piece and not the pause
+    between them. None without two timestamps."""
+    total, piece, seen = 0.0, None, 0
+    for line in lines:
+        m = _TIMESTAMP.match(line)
+        if not m:
+            continue
+        t = datetime.datetime(*map(int, m.groups()))
+        seen += 1
+        if piece is None or _PIECE_START.match(line):
+            if piece is not None:
+                total += (piece[1] - piece[0]).total_seconds()
+            piece = [t, t]
+        piece[1] = t
+    if seen < 2:
+        return None
+    return total + (piece[1] - piece[0]).total_seconds()
+
+
 def _status_and_wall(run_dir, names):
     """('finished' | 'stopped' | 'failed' | 'unstable' | 'incomplete', wall seconds or None)."""
-    status, wall = "incomplete", None
-    if "sweep.failed" in names:
-        status = "failed"
+    status = "failed" if "sweep.failed" in names else "incomplete"
     try:
         with open(os.path.join(run_dir, "run.log"), encoding="utf-8", errors="replace") as f:
             lines = f.read().splitlines()
     except OSError:
-        return status, wall
-    stamps = [m.groups() for m in map(_TIMESTAMP.match, lines) if m]
-    if len(stamps) >= 2:
-        t = [datetime.datetime(*map(int, s)) for s in (stamps[0], stamps[-1])]
-        wall = (t[1] - t[0]).total_seconds()
+        return status, None
+    wall = _wall_seconds(lines)
     last = lines[-1] if lines else ""
-    m = re.search(r"finished at step .* in ([0-9.]+) s", last)
-    if m:
-        return "finished", float(m.group(1))  # the run's own count, without set-up
+    if re.search(r"finished at step .* in ([0-9.]+) s", last):
+        return "finished", wall
     if "stopped by" in last:
         return "stopped", wall
     if "unstable" in last.lower():
