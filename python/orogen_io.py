@@ -22,7 +22,7 @@ What is read (docs/output-files.md, docs/sweeps.md):
 - snapshots.h5: file attributes (format, version, n_outputs, h0, experiment, ...), groups
   output_000000 ... of which the first n_outputs are complete, each with per-disc arrays
   x, y, radius, depth0, motion, cluster_id, ... and walls (n x 4: ax, ay, bx, by) ->
-  read_frame, read_last_frame (h5py; optional for everything else).
+  read_frame, read_last_frame (orogen.frames, h5py; optional for everything else).
 
 Also the surface of a set of discs as the model measures it (MODEL section 8: columns of width
 2.3 mean radii, the top of the highest disc in each), the least-squares line and quadratic of a
@@ -43,8 +43,9 @@ import pandas as pd
 import orogen.results  # the pandas readers of run folders (python/orogen; no compiled engine needed)
 
 try:
-    import h5py
-except ImportError:  # only read_last_frame needs it
+    import h5py  # only read_frame needs it: the charts test `oio.h5py is None` to skip pictures
+    import orogen.frames  # the package's snapshot reader
+except ImportError:
     h5py = None
 
 COLUMN_WIDTH_RADII = 2.3  # surface columns 2.3 mean radii wide (MODEL section 8)
@@ -276,40 +277,21 @@ def read_frame(path, index=-1):
     omega, theta, radius, depth0, x0, y0, motion, cluster_id, id, max_rel_disp, disp3_*, ...:
     each 1-D dataset of length n); walls (n x 4: ax, ay, bx, by); the group's attributes (step,
     time, S, ...) under 'attrs', the file's (h0, experiment, ...) under 'file_attrs'; 'output'
-    (the group's number). None when the file has no complete output. Groups beyond n_outputs
-    (left by a killed run) are never read."""
+    (the group's number). None when the file has no such complete output. Groups beyond
+    n_outputs (left by a killed run) are never read. Read by orogen.frames (the package's
+    reader); the charts need x, y and radius, so an output without them is a RunError."""
     if h5py is None:
         raise RuntimeError("h5py is not installed")
-    with h5py.File(path, "r") as f:
-        n = int(f.attrs.get("n_outputs", 0))
-        file_attrs = {k: _attr(v) for k, v in f.attrs.items()}
-        if n <= 0 or not -n <= index < n:
-            return None
-        k = index % n
-        g = f["output_%06d" % k]
-        frame = {"output": k, "file_attrs": file_attrs, "attrs": {a: _attr(v) for a, v in g.attrs.items()}}
-        n_discs = g["x"].shape[0] if "x" in g else None
-        for name, ds in g.items():  # every per-disc field: none is dropped
-            if isinstance(ds, h5py.Dataset) and ds.ndim == 1 and ds.shape[0] == n_discs and name != "walls":
-                frame[name] = np.asarray(ds[:])
-        frame["walls"] = np.asarray(g["walls"][:], dtype=float).reshape(-1, 4) if "walls" in g else np.zeros((0, 4))
+    frame = orogen.frames.read_frame(path, index)
     for name in ("x", "y", "radius"):
-        if name not in frame:
-            raise RunError("%s: output %d has no '%s'" % (path, k, name))
+        if frame is not None and name not in frame:
+            raise RunError("%s: output %d has no '%s'" % (path, frame["output"], name))
     return frame
 
 
 def read_last_frame(path):
     """The last complete output of snapshots.h5 (see read_frame), or None."""
     return read_frame(path, -1)
-
-
-def _attr(v):
-    if isinstance(v, bytes):
-        return v.decode("utf-8", "replace")
-    if isinstance(v, np.generic):
-        return v.item()
-    return v
 
 
 # --------------------------------------------------------------------------------------------

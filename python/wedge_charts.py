@@ -16,8 +16,8 @@ atomically: a temporary file in OUTDIR, then os.replace):
     summary.json     per run: final S and H, fitted exponent, late tapers, retro accretion onset
 
 Several runs are overlaid, one colour per run. Only numpy, pandas (the tables, through
-orogen_io), matplotlib (Agg) and h5py are used; without h5py the topography chart says so
-instead of drawing the surface.
+orogen_io), matplotlib (Agg) and h5py (snapshots.h5, through the package's orogen.frames) are
+used; without h5py the topography chart says so instead of drawing the surface.
 
 Conventions: lengths are in units of h0 and x is measured from the S-point (x = 0), as in
 series.csv. The program reports a front as exactly 0 (the S-point) while no disc is above the
@@ -41,11 +41,6 @@ from matplotlib.lines import Line2D  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import orogen_io as oio  # noqa: E402
 from powerlaw import power_law_fit, simple_model_height  # noqa: E402,F401 (shared fits)
-
-try:
-    import h5py
-except ImportError:  # the other charts do not need it
-    h5py = None
 
 FIT_S_MIN = 0.5          # power-law fit of H over S > FIT_S_MIN (and H > 0)
 LATE_FRACTION = 1.0 / 3  # late-time means over the last third of the run (in S)
@@ -90,12 +85,13 @@ def read_topography(h5_path, max_profiles=None):
     Columns of width 2.3 mean radii (of each output) on a grid anchored at the S-point; the top
     (y + r) of the highest disc in a column is the surface there. Returns a list of dicts with
     step, S, x_centres (h0), height (h0; NaN for empty columns), and h0 (world units)."""
-    if h5py is None:
+    if oio.h5py is None:
         raise RuntimeError("h5py is not installed")
+    from orogen.frames import Snapshots  # the package's reader (h5py): complete outputs only
     out = []
-    with h5py.File(h5_path, "r") as f:
-        n = int(f.attrs.get("n_outputs", 0))
-        h0 = float(f.attrs.get("h0", 1.0))
+    with Snapshots(h5_path) as snaps:
+        n = len(snaps)
+        h0 = float(snaps.attrs.get("h0", 1.0))
         if not (h0 > 0):
             h0 = 1.0
         indices = list(range(n))
@@ -103,14 +99,14 @@ def read_topography(h5_path, max_profiles=None):
             keep = np.unique(np.round(np.linspace(0, n - 1, max_profiles)).astype(int))
             indices = [int(k) for k in keep]
         for k in indices:
-            g = f["output_%06d" % k]
-            x = np.asarray(g["x"][:], dtype=float)
-            y = np.asarray(g["y"][:], dtype=float)
-            r = np.asarray(g["radius"][:], dtype=float)
+            frame = snaps.frame(k, fields=("x", "y", "radius"))  # a surface needs no other field
+            x = np.asarray(frame["x"], dtype=float)
+            y = np.asarray(frame["y"], dtype=float)
+            r = np.asarray(frame["radius"], dtype=float)
             ok = np.isfinite(x) & np.isfinite(y) & np.isfinite(r)
             x, y, r = x[ok], y[ok], r[ok]
-            step = int(g.attrs.get("step", k))
-            s_value = float(g.attrs.get("S", np.nan))
+            step = int(frame["attrs"].get("step", k))
+            s_value = float(frame["attrs"].get("S", np.nan))
             if x.size == 0:
                 out.append(dict(output=k, step=step, S=s_value, x=np.array([]), height=np.array([]), h0=h0))
                 continue
@@ -464,7 +460,7 @@ def chart_topography(runs, path):
                 for name, text in (("Dp", "Dp, Dr"), ("Mp", "Mp, Mr"), ("T", "T (peak)"))]
     ax_p.legend(handles=handles, fontsize=7, loc="upper left")
     if not any_profile:
-        no_data(ax_p, "no snapshots.h5 (or no h5py)" if h5py is None or all(p is None for p in profiles_all)
+        no_data(ax_p, "no snapshots.h5 (or no h5py)" if oio.h5py is None or all(p is None for p in profiles_all)
                 else "no discs")
 
     # Right: S-x image coloured by elevation, one panel per run, fronts on top.

@@ -1,6 +1,7 @@
 """orogen.open_run reads every field of a CLI run, with the units the files carry; the chart
 scripts run on a tiny run."""
 
+import shutil
 import subprocess
 import sys
 
@@ -67,6 +68,49 @@ def test_orogen_io_keeps_every_field(cli_wedge):
     frame = orogen_io.read_last_frame(cli_wedge / "snapshots.h5")
     for name in ("vx", "vy", "omega", "theta", "max_rel_disp", "disp3_x", "disp3_y", "x", "radius"):
         assert name in frame, name
+
+
+def test_read_frame_is_every_dataset_of_the_output_file(cli_wedge):
+    """orogen_io.read_frame, through the package's reader (orogen.frames) and the links of
+    snapshots.h5, gives each output's datasets and attributes exactly as h5py reads its file."""
+    sys.path.insert(0, str(REPO / "python"))
+    import orogen_io
+    files = sorted((cli_wedge / "snapshots").glob("output_*.h5"))
+    for k, path in enumerate(files):
+        frame = orogen_io.read_frame(cli_wedge / "snapshots.h5", k)
+        with h5py.File(path, "r") as f:
+            datasets = {n: f[n][()] for n in f if isinstance(f[n], h5py.Dataset)}
+            attrs = dict(f.attrs)
+        assert frame["output"] == k
+        assert set(frame) == set(datasets) | {"output", "attrs", "file_attrs"}
+        for name, want in datasets.items():
+            got = frame[name]
+            assert got.dtype == want.dtype and np.array_equal(got, want, equal_nan=want.dtype.kind == "f"), name
+        assert frame["walls"].shape == (datasets["walls"].shape[0], 4)
+        assert frame["attrs"] == {a: v.decode() if isinstance(v, bytes) else v for a, v in attrs.items()}
+        assert frame["file_attrs"]["n_outputs"] == len(files) and frame["file_attrs"]["experiment"] == "wedge"
+
+
+def test_outputs_past_n_outputs_are_never_read(cli_wedge, tmp_path):
+    """A killed run: snapshots.h5 counts fewer outputs than its links and files; the outputs
+    past n_outputs (here files that are not HDF5 at all) are never opened by any reader."""
+    sys.path.insert(0, str(REPO / "python"))
+    import orogen_io
+    import wedge_charts
+    run = tmp_path / "killed"
+    shutil.copytree(cli_wedge, run)
+    with h5py.File(run / "snapshots.h5", "r+") as f:
+        n = int(f.attrs["n_outputs"]) - 2
+        f.attrs["n_outputs"] = n
+    for k in (n, n + 1):
+        (run / "snapshots" / f"output_{k:06d}.h5").write_bytes(b"cut short by the kill")
+    h5 = run / "snapshots.h5"
+    assert orogen_io.read_last_frame(h5)["output"] == n - 1
+    assert orogen_io.read_frame(h5, n) is None and orogen_io.read_frame(h5, -n - 1) is None
+    assert [p["output"] for p in wedge_charts.read_topography(h5)] == list(range(n))
+    r = orogen.open_run(run)
+    assert r.snapshots.sizes["output"] == n and np.isfinite(r.snapshots["x"].load().values[:, 0]).all()
+    assert r.output(-1).attrs["step"] == orogen_io.read_last_frame(h5)["attrs"]["step"]
 
 
 def test_wedge_charts_on_a_tiny_run(cli_wedge, tmp_path):

@@ -167,6 +167,18 @@ class WedgeChartsTest(unittest.TestCase):
         self.assertTrue(top[0] < top[1] < top[2])
         self.assertAlmostEqual(top[2], (6.0 + 6.0) / H0, delta=0.1)
 
+    def test_package_reads_groups_written_into_snapshots_h5(self):
+        # The fixture's outputs are groups of snapshots.h5 itself, not links to snapshots/: the
+        # package's lazy Dataset reads them too, the complete ones only, as read_frame does.
+        if h5py is None:
+            self.skipTest("h5py not installed")
+        from orogen.snapshots import open_snapshots
+        frame = wc.oio.read_frame(os.path.join(self.run_dir, "snapshots.h5"), -1)
+        snaps = open_snapshots(self.run_dir)
+        self.assertEqual(snaps.sizes["output"], 3)
+        self.assertTrue(np.array_equal(snaps["y"].isel(output=2).values, frame["y"]))
+        self.assertTrue(np.array_equal(snaps["walls"].isel(output=2).values, frame["walls"]))
+
     def test_nan_and_no_front(self):
         # NaN rows, no front ever, no snapshots: every chart still drawn, nulls in the summary.
         other = os.path.join(self.tmp, "run_b")
