@@ -2,24 +2,15 @@
 meaning [unit]` lines before the header row, then numbers."""
 import csv
 import math
-import re
 
-_DOC = re.compile(r"^#\s*([A-Za-z0-9_.\-]+):\s*(.*?)\s*(?:\[([^\]]*)\])?\s*$")
+from orogen.results import column_docs
 
 
 def read(path):
     """{'columns': [...], 'units': {name: unit}, 'docs': {name: text}, 'rows': [[str...]]}."""
-    docs, units, lines = {}, {}, []
+    units, docs = column_docs(path)  # the package's reader of the `# name: meaning [unit]` lines
     with open(path, encoding="utf-8", errors="replace") as f:
-        for line in f:
-            if line.startswith("#"):
-                m = _DOC.match(line.strip())
-                if m:
-                    docs[m.group(1)] = m.group(2)
-                    if m.group(3) is not None:
-                        units[m.group(1)] = m.group(3)
-            elif line.strip():
-                lines.append(line)
+        lines = [line for line in f if not line.startswith("#") and line.strip()]
     rows = list(csv.reader(lines))
     if not rows:
         return {"columns": [], "units": units, "docs": docs, "rows": []}
