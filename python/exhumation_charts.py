@@ -175,9 +175,7 @@ def main(argv=None):
     p.add_argument("--positions", help="x values [h0] of the through-time figures, comma-separated")
     p.add_argument("--frames", type=int, default=4, help="outputs in horizon_frames.png")
     a = p.parse_args(argv)
-    path = orogen_analysis.analysis_path(a.run)
-    if not os.path.isfile(path):
-        print("error: %s not found: run `orogen analyze %s` first" % (path, a.run), file=sys.stderr)
+    if not orogen_analysis.found(a.run):
         return 2
     positions = None
     if a.positions:

@@ -90,9 +90,7 @@ def main(argv=None):
     p.add_argument("--width", type=int, default=1000, help="frame width in pixels")
     p.add_argument("--fps", type=int, default=12, help="animation frames per second")
     a = p.parse_args(argv)
-    path = orogen_analysis.analysis_path(a.run)
-    if not os.path.isfile(path):
-        print("error: %s not found: run `orogen analyze %s` first" % (path, a.run), file=sys.stderr)
+    if not orogen_analysis.found(a.run):
         return 2
     if a.every < 1 or a.width < 200 or a.fps < 1:
         print("error: --every and --fps must be at least 1, --width at least 200", file=sys.stderr)

@@ -11,6 +11,7 @@ helpers below return xarray objects too. Needs python3-xarray and python3-h5netc
 """
 
 import os
+import sys
 import warnings
 
 import numpy as np
@@ -20,6 +21,15 @@ import xarray as xr
 def analysis_path(path):
     """The analysis.h5 of a run folder, or the path itself if it is a file."""
     return os.path.join(path, "analysis.h5") if os.path.isdir(path) else path
+
+
+def found(run):
+    """True if the run has its analysis.h5; else False, after saying on stderr what to run first."""
+    path = analysis_path(run)
+    if os.path.isfile(path):
+        return True
+    print("error: %s not found: run `orogen analyze %s` first" % (path, run), file=sys.stderr)
+    return False
 
 
 def load(path):
