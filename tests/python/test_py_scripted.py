@@ -101,6 +101,28 @@ def test_killed_and_resumed_equals_the_uninterrupted_run(scripted_run, tmp_path)
     assert_same_bits(scripted_run, out)
 
 
+TWO_THREADS_RUN = """
+import sys
+sys.path.insert(0, {tests!r})
+import orogen
+from test_py_scripted import TINY_SCRIPTED, build_box
+orogen.run(TINY_SCRIPTED, out={out!r}, setup=build_box, threads=2)
+"""
+
+
+def test_two_threads_give_the_bits_of_one(scripted_run, tmp_path):
+    # In a process of its own: the engine reads OROGEN_MIN_PARALLEL_ITEMS once, and a few dozen
+    # discs must be split between the threads for the test to mean anything.
+    out = tmp_path / "two_threads"
+    code = TWO_THREADS_RUN.format(tests=str(REPO / "tests" / "python"), out=str(out))
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          env={**os.environ, "OROGEN_MIN_PARALLEL_ITEMS": "4", "OMP_NUM_THREADS": "2",
+                               "PYTHONPATH": os.pathsep.join([str(REPO / "python"), os.environ.get("PYTHONPATH", "")])})
+    assert proc.returncode == 0, proc.stderr
+    assert "2 thread(s)" in (out / "run.log").read_text()
+    assert_same_bits(scripted_run, out)
+
+
 def test_simulation_with_setup_steps_as_the_run(scripted_run):
     last = orogen.open_run(scripted_run).output(-1).sortby("particle")
     sim = orogen.Simulation(TINY_SCRIPTED, setup=build_box)
