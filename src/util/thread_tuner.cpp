@@ -3,12 +3,13 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace orogen {
 
 ThreadTuner::ThreadTuner(int max_threads, double slice, int probe_every)
-    : max_(max_threads), slice_(slice), probe_every_(probe_every), current_(max_threads) {}
+    : max_(max_threads), slice_(slice), probe_every_(probe_every), interval_(probe_every), current_(max_threads) {}
 
 void ThreadTuner::restart(double now) {
   slice_start_ = now;
@@ -35,11 +36,18 @@ int ThreadTuner::after_step(double work, double now) {
   restart(now);
   const Count& o = stats(other(current_));
   if (probing_ || o.rate == 0) {
-    // After a probe (or before the other count was ever timed): stay on the faster.
+    // After a probe (or before the other count was ever timed): stay on the faster. A probe
+    // that confirms the choice makes the next one wait twice as long.
+    const bool was_probe = probing_ && o.rate > 0;
     probing_ = o.rate == 0;
-    if (o.rate > c.rate || o.rate == 0) current_ = other(current_);
+    if (o.rate > c.rate || o.rate == 0) {
+      current_ = other(current_);
+      if (was_probe) interval_ = std::min(2 * interval_, kMaxProbeEvery);
+    } else if (was_probe) {
+      interval_ = probe_every_;  // the probed count was faster: the machine changed
+    }
     slices_since_probe_ = 0;
-  } else if (++slices_since_probe_ >= probe_every_) {
+  } else if (++slices_since_probe_ >= interval_) {
     probing_ = true;
     current_ = other(current_);
   }

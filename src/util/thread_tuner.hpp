@@ -12,8 +12,11 @@ class ThreadTuner {
  public:
   // max_threads: the team size asked for (1 turns tuning off); slice: wall seconds each
   // count is timed for before the next decision; probe_every: slices on the chosen count
-  // between two probes of the other.
+  // between two probes of the other, doubled after each probe that confirms the choice (up
+  // to kMaxProbeEvery) and back to probe_every after a switch: a probe runs a slice on the
+  // slower count, 4% of the main job's stepping time when every eighth slice was one.
   ThreadTuner(int max_threads, double slice, int probe_every = 8);
+  static constexpr int kMaxProbeEvery = 32;
 
   // The work of one step (particle-steps) done at wall time `now` [s]. Returns the thread
   // count for the next step (changed only at the end of a slice).
@@ -45,6 +48,7 @@ class ThreadTuner {
   int max_;
   double slice_;
   int probe_every_;
+  int interval_;  // slices between probes now (probe_every_ .. kMaxProbeEvery)
   int current_;
   bool probing_ = false;
   int slices_since_probe_ = 0;

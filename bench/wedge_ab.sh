@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Issue 17's wedge speed check: two orogen binaries, A and B, on the same wedge workload, run in
+# turn (A B A B ...) so that both see the same machine; prints each run's stepping rate (the
+# run log's "finished ... M particle-steps/s", set-up and outputs not counted), the medians and
+# the median of the pair-by-pair ratios B/A, and whether the two wrote the same series.csv.
+#   bench/wedge_ab.sh A_BINARY B_BINARY [WORKLOAD] [PAIRS] [THREADS]
+# WORKLOAD: main (the main job's default wedge to S = 0.5, the default) or ni (the N(I) preset,
+# 17,616 discs, to S = 0.3); PAIRS: 5; THREADS: 1 (2 = both cores, with run.adapt_threads off
+# so that both binaries step on the same number of threads throughout).
+# docs/performance.md ("A faster wedge") has the numbers.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+a=$1; b=$2; workload=${3:-main}; pairs=${4:-5}; threads=${5:-1}
+case $workload in
+  main) args=(--set wedge.s_end=0.5 --set wedge.outputs=2) ;;
+  ni) args=(examples/wedge_natural_variability_NI.toml --set wedge.s_end=0.3 --set wedge.outputs=2) ;;
+  *) echo "workload: main or ni, not '$workload'" >&2; exit 2 ;;
+esac
+work=$(mktemp -d /tmp/orogen_wedge_ab.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+rate() { grep -o 'finished .*(\([0-9.]*\) M particle-steps/s' "$1/run.log" | sed 's/.*(\([0-9.]*\) M.*/\1/'; }
+ra=(); rb=()
+for k in $(seq "$pairs"); do
+  for which in a b; do
+    bin=$a; [ "$which" = b ] && bin=$b
+    rm -rf "$work/$which"
+    OMP_PROC_BIND=true "$bin" run "${args[@]}" --threads "$threads" --set run.adapt_threads=false \
+      --set output.progress=never --set output.vtp=false --out "$work/$which" > /dev/null 2>&1
+  done
+  r_a=$(rate "$work/a"); r_b=$(rate "$work/b")
+  ra+=("$r_a"); rb+=("$r_b")
+  same=different; cmp -s "$work/a/series.csv" "$work/b/series.csv" && same=same
+  echo "pair $k: A $r_a  B $r_b  M particle-steps/s  (series.csv $same)"
+done
+median() { printf '%s\n' "$@" | sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+ratios=(); for k in "${!ra[@]}"; do ratios+=("$(awk -v a="${ra[$k]}" -v b="${rb[$k]}" 'BEGIN {printf "%.3f", b / a}')"); done
+echo "workload $workload, $threads thread(s), $pairs pairs: median A $(median "${ra[@]}"), B $(median "${rb[@]}") M particle-steps/s; B/A median $(median "${ratios[@]}") (pairs: ${ratios[*]})"
