@@ -44,8 +44,14 @@ int main(int argc, char** argv) {
   app.add_option("--steps", steps, "steps per block")->check(CLI::Range(1, 10000000));
   CLI11_PARSE(app, argc, argv);
 
-  const orogen::Config config =
-      orogen::Config::load(config_file ? std::optional<std::filesystem::path>(*config_file) : std::nullopt, sets);
+  std::optional<orogen::Config> loaded;
+  try {
+    loaded = orogen::Config::load(config_file ? std::optional<std::filesystem::path>(*config_file) : std::nullopt, sets);
+  } catch (const orogen::ConfigError& e) {
+    fmt::print(stderr, "bench_wedge_step: {}\n", e.what());
+    return 2;
+  }
+  const orogen::Config& config = *loaded;
   auto experiment = orogen::make_experiment(config);
   orogen::World world;
   orogen::apply_engine_config(config, world);
@@ -60,7 +66,13 @@ int main(int argc, char** argv) {
       const bool single = (k + r) % 2 == 0;  // alternate which goes first
       omp_set_num_threads(single ? 1 : threads);
       const auto t0 = std::chrono::steady_clock::now();
-      for (int s = 0; s < steps; ++s) experiment->advance(world);
+      for (int s = 0; s < steps; ++s) {
+        if (!experiment->advance(world)) {
+          fmt::print(stderr, "bench_wedge_step: the run ended at step {}; ask for fewer --rounds or --steps\n",
+                     world.step);
+          return 2;
+        }
+      }
       const auto t1 = std::chrono::steady_clock::now();
       us[single ? 0 : 1] = std::chrono::duration<double, std::micro>(t1 - t0).count() / steps;
     }
