@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "median.hpp"
 #include "world/world.hpp"
 
 using namespace orogen;
@@ -378,14 +379,13 @@ int main(int argc, char** argv) {
         std::fflush(stdout);
       }
       if (secs.size() > 1) {
-        std::vector<double> s = secs;
-        std::sort(s.begin(), s.end());
-        const double med = s.size() % 2 ? s[s.size() / 2] : 0.5 * (s[s.size() / 2 - 1] + s[s.size() / 2]);
+        const double med = orogen::bench::median(secs);
         const double ps = static_cast<double>(n) * static_cast<double>(steps);
         std::printf("MEDIAN N=%zu mode=%s threads=%d steps=%llu repeats=%zu seconds=%.3f Mps=%.3f "
                     "ns_per_ps_core=%.2f min=%.3f max=%.3f\n",
-                    n, mode.c_str(), threads, static_cast<unsigned long long>(steps), s.size(), med,
-                    ps / med / 1e6, 1e9 * med * threads / ps, s.front(), s.back());
+                    n, mode.c_str(), threads, static_cast<unsigned long long>(steps), secs.size(), med,
+                    ps / med / 1e6, 1e9 * med * threads / ps, *std::min_element(secs.begin(), secs.end()),
+                    *std::max_element(secs.begin(), secs.end()));
         std::fflush(stdout);
       }
     }

@@ -10,25 +10,16 @@
 #include <fmt/format.h>
 #include <omp.h>
 
-#include <algorithm>
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "config/config.hpp"
 #include "experiments/experiment.hpp"
+#include "median.hpp"
 #include "world/world.hpp"
-
-namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"A wedge step on one thread against N, in one process"};
@@ -44,19 +35,22 @@ int main(int argc, char** argv) {
   app.add_option("--steps", steps, "steps per block")->check(CLI::Range(1, 10000000));
   CLI11_PARSE(app, argc, argv);
 
-  std::optional<orogen::Config> loaded;
-  try {
-    loaded = orogen::Config::load(config_file ? std::optional<std::filesystem::path>(*config_file) : std::nullopt, sets);
+  std::unique_ptr<orogen::Experiment> experiment;
+  orogen::World world;
+  omp_set_num_threads(threads);
+  try {  // bad keys and an unstable set-up end as `orogen run` ends them: exit 2 and 3
+    const orogen::Config config =
+        orogen::Config::load(config_file ? std::optional<std::filesystem::path>(*config_file) : std::nullopt, sets);
+    experiment = orogen::make_experiment(config);
+    orogen::apply_engine_config(config, world);
+    experiment->setup(world);
   } catch (const orogen::ConfigError& e) {
     fmt::print(stderr, "bench_wedge_step: {}\n", e.what());
     return 2;
+  } catch (const orogen::InstabilityError& e) {
+    fmt::print(stderr, "bench_wedge_step: {}\n", e.what());
+    return 3;
   }
-  const orogen::Config& config = *loaded;
-  auto experiment = orogen::make_experiment(config);
-  orogen::World world;
-  orogen::apply_engine_config(config, world);
-  omp_set_num_threads(threads);
-  experiment->setup(world);
   for (long s = 0; s < warmup && experiment->advance(world); ++s) {
   }
   std::vector<double> one, all, ratio;
@@ -83,6 +77,6 @@ int main(int argc, char** argv) {
                us[1], world.discs.size());
   }
   fmt::print("{} rounds of {} steps: median 1 thread {:.2f} us/step, {} threads {:.2f} us/step; speed-up median {:.3f}\n",
-             rounds, steps, median(one), threads, median(all), median(ratio));
+             rounds, steps, orogen::bench::median(one), threads, orogen::bench::median(all), orogen::bench::median(ratio));
   return 0;
 }

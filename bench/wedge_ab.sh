@@ -25,7 +25,8 @@ for k in $(seq "$pairs"); do
     bin=$a; [ "$which" = b ] && bin=$b
     rm -rf "$work/$which"
     OMP_PROC_BIND=true "$bin" run "${args[@]}" --threads "$threads" --set run.adapt_threads=false \
-      --set output.progress=never --set output.vtp=false --out "$work/$which" > /dev/null 2>&1
+      --set output.progress=never --set output.vtp=false --out "$work/$which" > "$work/$which.out" 2>&1 ||
+      { echo "$bin failed:" >&2; tail -5 "$work/$which.out" >&2; exit 1; }
   done
   r_a=$(rate "$work/a"); r_b=$(rate "$work/b")
   ra+=("$r_a"); rb+=("$r_b")
