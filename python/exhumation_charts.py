@@ -21,6 +21,10 @@ RUN_DIR/charts/exhumation), each file atomically (temporary name, then os.replac
     horizon_frames.png          discs coloured by their starting elevation at a few outputs,
                                 with the area eroded per column so far (6.1-6.4)
     flux.png                    eroded flux against the incoming flux v h0, steady output marked
+    pro_cycle.png               the pro deformation and marker fronts against the area eroded so
+                                far, outputs of low erosion in grey, step-outs marked; below, the
+                                gap between the two fronts, a proxy of the pro-wedge's steepness
+                                (6.6, 6.7)
 """
 
 import argparse
@@ -38,7 +42,8 @@ import orogen_analysis  # noqa: E402
 
 FIGURES = ("spacetime_elevation.png", "spacetime_max_depth.png", "spacetime_cum_erosion.png",
            "spacetime_surface_age.png", "max_depth_positions.png", "age_positions.png",
-           "age_jump_stats.png", "trajectories.png", "horizon_frames.png", "flux.png")
+           "age_jump_stats.png", "trajectories.png", "horizon_frames.png", "flux.png",
+           "pro_cycle.png")
 
 
 def save(fig, out, name):
@@ -128,6 +133,35 @@ def flux(ds, out):
     save(fig, out, "flux.png")
 
 
+def shade_low_erosion(ax, cycle):
+    """Grey bands over the outputs of low erosion, each as wide as one output spacing."""
+    s = cycle.S.to_numpy()
+    half = 0.5 * (s[1] - s[0]) if len(s) > 1 else 0.0
+    for k in np.flatnonzero(cycle.low.to_numpy()):
+        ax.axvspan(s[k] - half, s[k] + half, color="0.85", lw=0)
+
+
+def pro_cycle(run, ds, out):
+    cycle = orogen_analysis.pro_cycle(run, ds)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 6.5), sharex=True, height_ratios=(3, 2))
+    for ax in (top, bottom):
+        shade_low_erosion(ax, cycle)
+    top.plot(cycle.S, cycle.Dp, color="tab:blue", lw=1, label="pro deformation front Dp")
+    top.plot(cycle.S, cycle.Mp, color="tab:green", lw=1, label="pro marker front Mp")
+    steps = cycle[cycle.step_out]
+    top.plot(steps.S, steps.Dp, "v", color="tab:blue", ms=4, label="step-out (> %.1f h0)" % orogen_analysis.STEP_OUT)
+    top.set_ylabel("x from the S-point [h0]")
+    eroded = top.twinx()
+    eroded.plot(cycle.S, cycle.eroded_area, color="tab:red", lw=1)
+    eroded.set_ylabel("area eroded so far [d^2]", color="tab:red")
+    top.legend(fontsize=8, loc="lower left")
+    top.set_title("grey: outputs eroding below %.2f of the incoming flux" % orogen_analysis.LOW_EROSION, fontsize=9)
+    bottom.plot(cycle.S, cycle.front_gap, color="k", lw=1)
+    bottom.set_ylabel("Mp - Dp [h0]")
+    bottom.set_xlabel("S = v t / h0")
+    save(fig, out, "pro_cycle.png")
+
+
 def age_jump_stats(ds, ci, out):
     stats = orogen_analysis.surface_age_stats(ds)
     fig, axes = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
@@ -164,6 +198,7 @@ def make_all(run, out=None, closure=0.5, positions=None, frames=4):
     trajectories(ds, out, max(1, ds.sizes["time"] // 8))
     horizon_frames(ds, out, frames)
     flux(ds, out)
+    pro_cycle(run, ds, out)
     return out
 
 

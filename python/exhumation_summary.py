@@ -39,11 +39,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import orogen  # noqa: E402  (the readers only: no compiled engine needed)
 import orogen_analysis as oa  # noqa: E402
 
-STEP_MIN = 0.5  # h0: a pro step-out, as python/ensemble_stats.py counts them
 
 
-def read_series(run):
-    series = orogen.read_csv(os.path.join(run, "series.csv"))[0]
+def read_series(run, n):
+    """S, Dp and Dr of the first n outputs of series.csv (a running run's series may be ahead)."""
+    series = orogen.read_csv(os.path.join(run, "series.csv"))[0].iloc[:n]
     return {k: series[k].to_numpy(dtype=float) for k in ("S", "Dp", "Dr")}
 
 
@@ -59,7 +59,7 @@ def corr(x, y):
 
 def indicators(run, closure=0.3):
     ds = oa.load(run)
-    series = read_series(run)
+    series = read_series(run, ds.sizes["time"])
     s = ds.S.values
     k0 = oa.steady_output(ds)
     out = {"run": os.path.basename(os.path.normpath(run)), "outputs": int(ds.sizes["time"]),
@@ -72,17 +72,15 @@ def indicators(run, closure=0.3):
     out["Dr_rate_after"] = slope(series["S"][after], series["Dr"][after])
 
     # The pro cycle against the erosion: flux in outputs where Dp steps out versus the rest.
-    dp = -series["Dp"]  # outward distance on the pro side
-    step = np.zeros(len(dp), dtype=bool)
-    step[1:] = np.diff(dp) > STEP_MIN
-    flux = ds.flux_out.values / float(ds.attrs["flux_in"])
-    idx = np.arange(len(s))
-    a = idx >= (k0 if k0 is not None else len(s) // 2)
+    cycle = oa.pro_cycle(run, ds)
+    m = len(cycle)
+    step, flux = cycle.step_out.to_numpy(), cycle.flux.to_numpy()
+    a = np.arange(m) >= (k0 if k0 is not None else len(s) // 2)
     out["pro_steps_after"] = int((step & a).sum())
     out["flux_at_steps"] = float(np.nanmean(flux[step & a])) if (step & a).any() else float("nan")
     out["flux_otherwise"] = float(np.nanmean(flux[~step & a]))
-    near_step = np.array([bool((step & a)[max(k - 2, 0):k + 3].any()) for k in range(len(s))])
-    low = a & (flux < 0.25)
+    near_step = np.array([bool((step & a)[max(k - 2, 0):k + 3].any()) for k in range(m)])
+    low = a & cycle.low.to_numpy()
     out["low_erosion_outputs"] = int(low.sum())
     out["low_erosion_near_step"] = int((low & near_step).sum())
     out["near_step_by_chance"] = float(near_step[a].mean())

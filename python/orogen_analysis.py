@@ -17,6 +17,12 @@ import warnings
 import numpy as np
 import xarray as xr
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import orogen  # noqa: E402  (the readers only: no compiled engine needed)
+
+STEP_OUT = 0.5      # h0: Dp moving outward by more than this in one output is a pro step-out
+LOW_EROSION = 0.25  # of the incoming flux: an output eroding less erodes "little" (Figs 6.6, 6.7)
+
 
 def analysis_path(path):
     """The analysis.h5 of a run folder, or the path itself if it is a file."""
@@ -42,6 +48,30 @@ def steady_output(ds):
     """Index of the flux steady-state output, or None if not reached."""
     k = int(ds.attrs["steady_output"])
     return None if k < 0 else k
+
+
+def pro_cycle(run, ds):
+    """The pro-wedge's thrust cycle against the erosion, one row per analysed output (thesis
+    Figs 6.6, 6.7), as a pandas.DataFrame: S; Dp and Mp, the pro deformation and marker fronts
+    from series.csv [h0]; front_gap = Mp - Dp, the thesis's proxy of the pro-wedge's steepness;
+    step_out, Dp moved outward by more than STEP_OUT since the output before; flux, the eroded
+    flux as a fraction of the incoming flux; eroded_area, the area eroded so far [d^2]; low,
+    the flux below LOW_EROSION once erosion has begun. `run` is the run folder (or its
+    analysis.h5), `ds` its analysis. A running run's series may hold outputs the analysis has
+    not reached yet: the rows stop at the analysis's last output."""
+    folder = run if os.path.isdir(run) else os.path.dirname(os.path.abspath(run))
+    series = orogen.read_csv(os.path.join(folder, "series.csv"))[0]
+    n = min(len(series), ds.sizes["time"])
+    df = series.iloc[:n][["S", "Dp", "Mp"]].astype(float).reset_index(drop=True)
+    df["front_gap"] = df.Mp - df.Dp
+    step = np.zeros(n, dtype=bool)
+    step[1:] = np.diff(-df.Dp.to_numpy()) > STEP_OUT
+    df["step_out"] = step
+    df["flux"] = ds.flux_out.values[:n] / float(ds.attrs["flux_in"])
+    df["eroded_area"] = ds.cum_eroded_area.isel(time=slice(0, n)).sum("column").values
+    begun = np.cumsum(df.eroded_area.to_numpy() > 0) > 0
+    df["low"] = begun & (df.flux.to_numpy() < LOW_EROSION)
+    return df
 
 
 def jump_mean_final(ds):

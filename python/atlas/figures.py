@@ -18,6 +18,7 @@ CHARTS = {
     "trajectories.png": ("Surface discs traced back in time", "Fig 6.9"),
     "horizon_frames.png": ("Horizons and erosion at a few outputs", "Figs 6.1-6.4"),
     "flux.png": ("Eroded flux against the incoming flux", ""),
+    "pro_cycle.png": ("Pro fronts against the erosion, low erosion in grey", "Figs 6.6, 6.7"),
     "fig5_14_fronts_members.png": ("Every member's fronts", "Fig 5.14"),
     "fig5_16_mean_fronts.png": ("Mean fronts with one standard deviation", "Fig 5.16"),
     "fig5_17_18_fits.png": ("Power-law fits of the fronts (log-log)", "Figs 5.17, 5.18"),

@@ -13,6 +13,7 @@ import tempfile
 import unittest
 
 import numpy as np
+import xarray as xr
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(REPO, "python"))
@@ -23,6 +24,33 @@ import exhumation_summary  # noqa: E402
 BINARY = os.environ.get("OROGEN_BINARY", "")
 SMALL = ("layer.thickness=5 wedge.tile_length=4 wedge.retro_length=4 wedge.initial_active=4 wedge.window=3 "
          "wedge.s_end=0.3 wedge.outputs=6 wedge.erosion_height=0.9 output.progress=never output.vtp=false").split()
+
+
+class ProCycle(unittest.TestCase):
+    """orogen_analysis.pro_cycle on a synthetic series and analysis with known answers."""
+
+    def test_fronts_steps_and_low_erosion(self):
+        tmp = tempfile.mkdtemp(prefix="orogen_pro_cycle_")
+        self.addCleanup(shutil.rmtree, tmp)
+        # Seven rows of series: the analysis has reached six outputs only (a running run).
+        dp = [0, -0.2, -1.0, -1.1, -1.1, -2.0, -2.1]
+        mp = [0, 0, -0.5, -0.5, -0.6, -0.6, -0.6]
+        with open(os.path.join(tmp, "series.csv"), "w") as f:
+            f.write("# S: convergence [-]\n# Dp: pro front [h0]\n# Mp: pro marker front [h0]\nS,Dp,Mp\n")
+            for k in range(7):
+                f.write(f"{0.1 * k},{dp[k]},{mp[k]}\n")
+        cum = np.array([[0, 0], [0, 0], [1, 0], [1, 1], [2, 1], [2, 2]], dtype=float)
+        ds = xr.Dataset({"flux_out": ("time", [0, 0, 1.0, 0.4, 0.2, 1.9]),
+                         "cum_eroded_area": (("time", "column"), cum)}, attrs={"flux_in": 2.0})
+        cycle = orogen_analysis.pro_cycle(tmp, ds)
+        self.assertEqual(len(cycle), 6)
+        # Outward steps of Dp: 0.2, 0.8, 0.1, 0, 0.9; above 0.5 h0 at outputs 2 and 5.
+        self.assertEqual(list(cycle.step_out), [False, False, True, False, False, True])
+        np.testing.assert_allclose(cycle.front_gap, [0, 0.2, 0.5, 0.6, 0.5, 1.4])
+        np.testing.assert_allclose(cycle.flux, [0, 0, 0.5, 0.2, 0.1, 0.95])
+        np.testing.assert_allclose(cycle.eroded_area, [0, 0, 1, 2, 3, 4])
+        # Low erosion counts only once erosion has begun (output 2): outputs 3 and 4.
+        self.assertEqual(list(cycle.low), [False, False, False, True, True, False])
 
 
 @unittest.skipUnless(BINARY and os.path.exists(BINARY), "OROGEN_BINARY not set")
