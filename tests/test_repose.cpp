@@ -88,10 +88,13 @@ TEST(Repose, RandomDiscsSlopeRisesWithFrictionAndClustersStandSteeper) {
 }
 
 TEST(Repose, HexagonalSlumpIsConcaveAndRandomIsNearlyPlanar) {
-  // Measured (seed 1): hexagonal +32 degrees at size 30 (+20 at size 24), random discs -1.5.
+  // Measured (seed 1): hexagonal +32 degrees at size 30 (+20 at size 24), random discs -15.
+  // A random slope's concavity is noise about a plane: over seeds 1-14 it was -1.4 +- 10.0
+  // degrees (-8.4 +- 9.6 with the list order before 2026-11-25), never beyond 23 in magnitude.
   const ReposeResult hex = run_repose("hexagonal", 0.03, "slump", 30), random = run_repose("random_discs", 0.3);
   EXPECT_GT(hex.get("concavity_deg"), 15.0);
-  EXPECT_LT(std::fabs(random.get("concavity_deg")), 15.0);
+  EXPECT_LT(std::fabs(random.get("concavity_deg")), 25.0);
+  EXPECT_GT(hex.get("concavity_deg") - random.get("concavity_deg"), 15.0);
   // The hexagonal slope follows its close-packed planes: steeper than any random packing here.
   EXPECT_GT(hex.get("angle_deg"), 40.0);
 }

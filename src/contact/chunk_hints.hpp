@@ -1,6 +1,6 @@
 #pragma once
-// The hints a list build leaves for the force loop and the thread split: which chunks are
-// dense (most pairs touching) and the first disc of each chunk. Hints only: results never
+// The hints a list build leaves for the force loop and the thread split: how many of each
+// chunk's pairs touched and the first disc of each chunk. Hints only: results never
 // depend on them, so they are not checkpointed.
 #include "contact/cell_grid.hpp"
 #include "contact/neighbor_list.hpp"
@@ -8,7 +8,7 @@
 
 namespace orogen {
 
-// Sets list.chunk_dense from the search's touching counts, and list.chunk_disc from the bins
+// Sets list.chunk_touching from the search's touching counts, and list.chunk_disc from the bins
 // when the discs were just sorted (`sorted`); without a sort, the old chunk_disc is kept while
 // the number of chunks is the same, else dropped.
 void set_chunk_hints(NeighborList& list, const PairSearchResult& search, const CellBins& bins, bool sorted);

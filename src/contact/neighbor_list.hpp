@@ -25,10 +25,11 @@ struct NeighborList {
   // chunks in parallel, then the odd ones, each disc summing its pairs in the same order
   // whatever the number of threads.
   std::vector<std::uint32_t> chunk_start;
-  // Whether most of chunk k's pairs touched at the last build: the force loop then runs every
-  // pair of the chunk through its kernel rather than testing each (contact/pair_forces.cpp).
-  // Only a hint, as chunk_disc: both ways give the same bits, so it is not checkpointed.
-  std::vector<std::uint8_t> chunk_dense;
+  // A build lists each chunk's pairs that touch first, then those apart. chunk_touching[k] is
+  // how many of chunk k's pairs touched at the last build: the force loop runs those through
+  // its kernel untested and tests the rest (contact/pair_forces.cpp). Only a hint, as
+  // chunk_disc: both ways give the same bits, so it is not checkpointed.
+  std::vector<std::uint32_t> chunk_touching;
   // The first disc of each chunk's stripes, chunks + 1 entries, from the last build that put
   // the discs in cell order (empty when unknown). Only a hint for cutting the discs between
   // threads where the chunks are cut (ThreadSplit): results never depend on it, so it is not

@@ -48,7 +48,8 @@ int compute_block(const PairView& L, const DiscView& d, const ContactLaw& law, d
 }
 
 // Pairs [begin, end) in pair order, added onto the discs' forces, only the touching ones
-// through the kernel: for a loose chunk, where many pairs are apart.
+// through the kernel: for the pairs that were apart at the list build, most still apart (so
+// the test mostly goes one way and its branch is predicted).
 template <class Normal>
 void touching_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law, double dt,
                           std::size_t begin, std::size_t end, DiscForce* __restrict force) {
@@ -65,13 +66,15 @@ void touching_pair_forces(const PairView& L, const DiscView& d, const ContactLaw
   }
 }
 
-// The same sums with every pair through the kernel, which reads the discs itself: for a dense
-// chunk, where most pairs touch. There, testing each pair and skipping the apart ones costs a
-// mispredicted branch for about one pair in four, at random, and with the discs out of cache
-// (80k of them) each one waited for the positions it tested. A pair apart gets what the test
-// would have given it: zero history, and a zero force and torque that change no sum (the sums
-// start at +0.0, and a sum that starts at +0.0 never becomes -0.0 when rounding to nearest, so
-// adding +0.0 or -0.0 leaves it as it is): the sums are bitwise those of touching_pair_forces.
+// The same sums with every pair through the kernel, which reads the discs itself: for the
+// pairs that touched at the list build, most still touching. Testing pairs that touch or not
+// at random costs a mispredicted branch per pair that goes the other way, and with the discs
+// out of cache (a wedge of 30k discs, a pile of 80k) each one waits for the positions it
+// tested: on N(I), one thread, testing every pair ran 1.5x slower (docs/performance.md). A
+// pair apart gets what the test would have given it: zero history, and a zero force and
+// torque that change no sum (the sums start at +0.0, and a sum that starts at +0.0 never
+// becomes -0.0 when rounding to nearest, so adding +0.0 or -0.0 leaves it as it is): the sums
+// are bitwise those of touching_pair_forces.
 template <class Normal>
 void all_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t begin,
                      std::size_t end, DiscForce* __restrict force) {
@@ -112,11 +115,13 @@ void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& 
   for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
     for (std::ptrdiff_t k = begin + ((begin & 1) != parity); k < end; k += 2) {
       const auto kk = static_cast<std::size_t>(k);
-      // Either way gives the same bits; the hint is missing right after a resume.
-      if (kk < L.chunk_dense.size() && L.chunk_dense[kk])
-        all_pair_forces<Normal>(pairs, d, law, dt, L.chunk_start[kk], L.chunk_start[kk + 1], force);
-      else
-        touching_pair_forces<Normal>(pairs, d, law, dt, L.chunk_start[kk], L.chunk_start[kk + 1], force);
+      // The pairs that touched at the build untested, then the rest tested. Either way gives
+      // the same bits; the hint is missing right after a resume.
+      const std::size_t begin_pair = L.chunk_start[kk], end_pair = L.chunk_start[kk + 1];
+      const std::size_t untested_end =
+          kk < L.chunk_touching.size() ? std::min(begin_pair + L.chunk_touching[kk], end_pair) : begin_pair;
+      all_pair_forces<Normal>(pairs, d, law, dt, begin_pair, untested_end, force);
+      touching_pair_forces<Normal>(pairs, d, law, dt, untested_end, end_pair, force);
     }
 #pragma omp barrier
   }

@@ -19,15 +19,16 @@ struct BuildStats {
   bool finite = true;
 };
 
-// What the search saw besides the pairs: per chunk how many touched (for the dense-chunk
-// hint), how many stripes make a chunk, and the worst overlap.
+// What the search saw besides the pairs: per chunk how many touched (listed first; the
+// chunk_touching hint), how many stripes make a chunk, and the worst overlap.
 struct PairSearchResult {
   std::vector<std::size_t> touching;
   std::int64_t stripes_per_chunk = 1;
   BuildStats stats;
 };
 
-// Sets list.first, second (the lower stable id first) and chunk_start from the bins.
+// Sets list.first, second (the lower stable id first; in each chunk the pairs that touch
+// first, then those apart, each part in search order) and chunk_start from the bins.
 PairSearchResult search_pairs(NeighborList& list, const CellBins& bins, const Discs& discs);
 
 }  // namespace orogen
