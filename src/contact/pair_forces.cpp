@@ -125,7 +125,8 @@ void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& 
           kk < L.chunk_touching.size() ? std::min(begin_pair + L.chunk_touching[kk], end_pair) : begin_pair;
       // A chunk that is mostly touching (the settled pile: 74%) goes untested whole: testing
       // its few apart pairs from memory cost the 80k pile 6-9% (docs/performance.md).
-      if (untested_end - begin_pair >= kDenseShare * static_cast<double>(end_pair - begin_pair)) untested_end = end_pair;
+      const double pairs_in_chunk = static_cast<double>(end_pair - begin_pair);
+      if (static_cast<double>(untested_end - begin_pair) >= kDenseShare * pairs_in_chunk) untested_end = end_pair;
       all_pair_forces<Normal>(pairs, d, law, dt, begin_pair, untested_end, force);
       touching_pair_forces<Normal>(pairs, d, law, dt, untested_end, end_pair, force);
     }
