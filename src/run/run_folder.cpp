@@ -149,20 +149,29 @@ std::string config_differences(std::string_view here, std::string_view there, st
     out += fmt::format("{}{} = {} in {}, {} in {}", out.empty() ? "" : "; ", key, va.empty() ? "(absent)" : va,
                        here_name, vb.empty() ? "(absent)" : vb, there_name);
   };
+  // Keys that may differ between the two: they extend a run, or change only how it goes or
+  // what is computed from its outputs.
+  auto free_to_differ = [](const std::string& key) {
+    return is_extension_key(key) || is_analysis_key(key) || is_display_key(key);
+  };
   for (const auto& [key, value] : a) {
-    if (is_extension_key(key) || is_analysis_key(key)) continue;
+    if (free_to_differ(key)) continue;
     const auto it = b.find(key);
     if (it == b.end()) add(key, value, "");
     else if (it->second != value) add(key, value, it->second);
   }
   for (const auto& [key, value] : b)
-    if (!a.contains(key) && !is_extension_key(key) && !is_analysis_key(key)) add(key, "", value);
+    if (!a.contains(key) && !free_to_differ(key)) add(key, "", value);
   return out;
 }
 
 // The [analysis] keys say only what is computed from the outputs, never what is simulated:
 // outside the identity, and free to differ between a checkpoint and config.toml.
 bool is_analysis_key(std::string_view key) { return key.starts_with("analysis."); }
+
+bool is_display_key(std::string_view key) {
+  return std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) != kKeysOutsideIdentity.end();
+}
 
 bool is_extension_key(std::string_view key) {
   return std::find(kExtensionKeys.begin(), kExtensionKeys.end(), key) != kExtensionKeys.end();
@@ -185,8 +194,7 @@ std::string run_identity(const Config& config) {
   std::string text;
   for (const auto& [key, value] : key_values(config.to_toml())) {
     if (is_later_key(key) && default_values().at(key) == value) continue;
-    if (std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) == kKeysOutsideIdentity.end() &&
-        !is_extension_key(key) && !is_analysis_key(key))
+    if (!is_display_key(key) && !is_extension_key(key) && !is_analysis_key(key))
       text += key + "=" + value + "\n";
   }
   return fmt::format("{:016x}", fnv1a64(text));

@@ -51,8 +51,8 @@ void remove_run_outputs(const std::filesystem::path& dir);
 int remove_temporary_files(const std::filesystem::path& dir);
 
 // "contact.kn = 5000.0 in config.toml, 10000.0 in the checkpoint; ..." for every key whose
-// value differs between two resolved configurations (Config::to_toml texts), the keys that
-// extend a run aside; "" if none.
+// value differs between two resolved configurations (Config::to_toml texts), the extension,
+// analysis and display keys aside; "" if none.
 std::string config_differences(std::string_view here, std::string_view there, std::string_view here_name,
                                std::string_view there_name);
 
@@ -64,6 +64,10 @@ std::map<std::string, std::string> key_values(std::string_view toml);
 bool is_extension_key(std::string_view key);
 // The [analysis] keys: outside the run identity and free to change on a resume.
 bool is_analysis_key(std::string_view key);
+// Keys that change how fast or how visibly a run goes, never what it computes (threads,
+// thread tuning, progress, checkpoint interval, .vtp output): outside the run identity, and a
+// resume may set them for itself (`--resume DIR --set output.progress=never`).
+bool is_display_key(std::string_view key);
 std::string extension_keys_text();  // "wedge.s_end, wedge.outputs"
 // "wedge.s_end 8.0 -> 16.0, ..." for the extension keys that differ from `before` to `now`.
 std::string extension_changes(std::string_view now, std::string_view before);

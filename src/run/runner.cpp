@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "analysis/contact_output.hpp"
 #include "config/config.hpp"
@@ -73,11 +75,13 @@ std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir, const std::shar
 
 class Run {
  public:
-  Run(const Config& config, fs::path dir, std::unique_ptr<Experiment> experiment)
-      : config_(config), dir_(std::move(dir)), exp_(std::move(experiment)),
+  // `settings`, where given, holds this process's keys of speed and display (a resume's own
+  // --set of them); `config` is the run's configuration, stored with its outputs.
+  Run(const Config& config, fs::path dir, std::unique_ptr<Experiment> experiment, const Config* settings = nullptr)
+      : config_(config), settings_(settings ? *settings : config), dir_(std::move(dir)), exp_(std::move(experiment)),
         interval_(exp_->output_interval().value_or(config.get_float("output.interval"))),
-        checkpoint_every_(config.get_int("output.checkpoint_every")),
-        write_vtp_(config.get_bool("output.vtp")), contact_output_(contact_output_options(config)),
+        checkpoint_every_(settings_.get_int("output.checkpoint_every")),
+        write_vtp_(settings_.get_bool("output.vtp")), contact_output_(contact_output_options(config)),
         identity_(run_identity(config)), analyze_in_run_(config.get_bool("analysis.in_run")),
         analyze_every_(config.get_int("analysis.every")) {}
 
@@ -156,8 +160,8 @@ class Run {
     const std::uint64_t step0 = world_.step;
     double particle_steps = 0;
     auto seconds = [&t0] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-    ThreadTuner tuner(config_.get_bool("run.adapt_threads") ? omp_get_max_threads() : 1,
-                      config_.get_float("run.adapt_slice"));
+    ThreadTuner tuner(settings_.get_bool("run.adapt_threads") ? omp_get_max_threads() : 1,
+                      settings_.get_float("run.adapt_slice"));
     while (exp_->advance(world_)) {
       // A scripted rule acts after its step and before that step's output, so outputs show it.
       const bool hook_stop =
@@ -413,6 +417,7 @@ class Run {
   }
 
   const Config& config_;
+  const Config& settings_;
   fs::path dir_;
   std::unique_ptr<Experiment> exp_;
   World world_;
@@ -515,14 +520,25 @@ void release_new_run(const RunOptions& opt, RunFolderLock& lock) {
   lock.abandon();
 }
 
-// The folder's configuration, with the --set overrides that extend a run (extension keys) and
-// no others.
+std::string override_key(const std::string& assignment) { return assignment.substr(0, assignment.find('=')); }
+
+// The --set overrides of a resume that extend the run (extension keys).
+std::vector<std::string> extension_overrides(const RunOptions& opt) {
+  std::vector<std::string> out;
+  for (const auto& o : opt.overrides)
+    if (is_extension_key(override_key(o))) out.push_back(o);
+  return out;
+}
+
+// The folder's configuration, with the --set overrides that extend a run (extension keys) or
+// change only how it goes (display keys), and no others.
 Config config_for_resume(const RunOptions& opt) {
   if (opt.config) throw UsageError("--resume takes its configuration from the run folder; drop CONFIG");
   for (const auto& o : opt.overrides)
-    if (const std::string key = o.substr(0, o.find('=')); !is_extension_key(key))
+    if (const std::string key = override_key(o); !is_extension_key(key) && !is_display_key(key))
       throw UsageError(fmt::format("--resume takes its configuration from the run folder; --set {} would change what "
-                                   "the run computes (a resume may change only {}, to extend it): start a new run instead",
+                                   "the run computes (a resume may change only {}, to extend it, and the keys of "
+                                   "speed and display such as run.threads and output.progress): start a new run instead",
                                    o, extension_keys_text()));
   if (!fs::is_directory(opt.out)) throw UsageError(fmt::format("--resume {}: no such folder", opt.out.string()));
   if (!fs::exists(opt.out / "config.toml"))
@@ -565,11 +581,14 @@ int run_command(const RunOptions& opt) {
     const int stale = remove_temporary_files(opt.out);
     if (opt.resume && !from_checkpoint) remove_run_outputs(opt.out);
 
-    Run run(config, opt.out, std::move(experiment));
+    // A resume's configuration as stored: the folder's, with only the extension keys changed.
+    const std::vector<std::string> extending = opt.resume ? extension_overrides(opt) : std::vector<std::string>{};
+    const Config stored = opt.resume ? Config::load(opt.out / "config.toml", extending) : config;
+    Run run(stored, opt.out, std::move(experiment), &config);
     run.abort_after_outputs(opt.abort_after_outputs);
     run.between_steps(opt.between_steps, opt.between_every);
     if (from_checkpoint) {
-      run.load_checkpoint(!opt.overrides.empty());
+      run.load_checkpoint(!extending.empty());
     } else {
       try {
         if (source) {
@@ -601,12 +620,12 @@ int run_command(const RunOptions& opt) {
                    source->at_checkpoint ? "from its checkpoint" : "rebuilt by replaying it from its set-up");
 
     if (from_checkpoint) {
-      if (!opt.overrides.empty()) {
+      if (!extending.empty()) {
         const std::string before = run.checkpoint_config();
         const std::string header =
             run.branch_from().empty() ? "" : fmt::format("{}{} (orogen run --from)\n", kBranchHeader, run.branch_from());
-        write_file_atomically(opt.out / "config.toml", header + config.to_toml());
-        logger->info("extended: {}", extension_changes(config.to_toml(), before));
+        write_file_atomically(opt.out / "config.toml", header + stored.to_toml());
+        logger->info("extended: {}", extension_changes(stored.to_toml(), before));
       }
       run.reopen_outputs();
     } else {
