@@ -66,8 +66,9 @@ def run(config=None, out="out", set=None, hook=None, every=100, threads=None, fr
 
 
 def resume(out, set=None, hook=None, every=100, threads=None, setup=None):
-    """Continues a run folder as `orogen run --resume OUT` (set: extension keys, and keys of speed and display for this resume alone). `setup`
-    is called only when the run was stopped before its first checkpoint and starts again."""
+    """Continues a run folder as `orogen run --resume OUT` (set: extension keys, and keys of
+    speed and display for this resume alone). `setup` is called only when the run was stopped
+    before its first checkpoint and starts again."""
     load_config(Path(out) / "config.toml", set)
     code = _orogen.run(None, overrides(set), Path(out), -1 if threads is None else int(threads), True, "",
                        hook, int(every) if hook else 0, setup)
