@@ -779,9 +779,16 @@ TEST_F(Cli, AFinishedWedgeExtendedWithResumeEqualsOneRunToTheNewEnd) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--set wedge.s_end="), std::string::npos) << r.err;
 
+  // A new end alone keeps the output spacing; an end between two outputs is refused, naming one that fits.
+  const std::string config_before = slurp(extended / "config.toml");
+  r = orogen_cli("run --resume '" + extended.string() + "' --set wedge.s_end=0.43", dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("0.43 is not a whole number of it: give an end that is (0.45 gives 9 outputs)"),
+            std::string::npos) << r.err;
+  EXPECT_EQ(slurp(extended / "config.toml"), config_before);
   // Keys of speed and display may come along; they hold for this resume and are not stored.
   r = orogen_cli("run --resume '" + extended.string() +
-                     "' --set wedge.s_end=0.4 --set wedge.outputs=8 --set output.checkpoint_every=3 --set run.threads=2",
+                     "' --set wedge.s_end=0.4 --set output.checkpoint_every=3 --set run.threads=2",
                  dir_);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(slurp(extended / "run.log").find("extended: wedge.s_end 0.2 -> 0.4, wedge.outputs 4 -> 8"),

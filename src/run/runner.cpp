@@ -6,6 +6,7 @@
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -118,7 +119,7 @@ class Run {
     state_.finished = in.get_scalar<std::uint8_t>("run.finished") != 0;
     if (state_.finished && !extending)
       throw UsageError(fmt::format("the run in {} has already finished; to extend it, give it a later end: orogen run "
-                                   "--resume {} --set wedge.s_end=... (and wedge.outputs for the same output spacing)",
+                                   "--resume {} --set wedge.s_end=... (wedge.outputs follows, at the same spacing)",
                                    dir_.string(), dir_.string()));
     state_.finished = false;
     load_world(in, world_);
@@ -522,28 +523,52 @@ void release_new_run(const RunOptions& opt, RunFolderLock& lock) {
 
 std::string override_key(const std::string& assignment) { return assignment.substr(0, assignment.find('=')); }
 
-// The --set overrides of a resume that extend the run (extension keys).
-std::vector<std::string> extension_overrides(const RunOptions& opt) {
-  std::vector<std::string> out;
-  for (const auto& o : opt.overrides)
-    if (is_extension_key(override_key(o))) out.push_back(o);
-  return out;
+// "wedge.outputs=N" that keeps the spacing of a wedge run's outputs up to its new wedge.s_end.
+std::string outputs_keeping_spacing(const fs::path& dir, const std::vector<std::string>& extending) {
+  const Config before = Config::load(dir / "config.toml", {});
+  const Config after = Config::load(dir / "config.toml", extending);
+  const double spacing = before.get_float("wedge.s_end") / static_cast<double>(before.get_int("wedge.outputs"));
+  const double outputs = after.get_float("wedge.s_end") / spacing;
+  const double whole = std::max(1.0, std::round(outputs));
+  if (std::abs(outputs - whole) > 1e-6 * whole)
+    throw UsageError(fmt::format("--resume {}: a new wedge.s_end alone keeps the run's output spacing (S = {:.6g}, "
+                                 "wedge.s_end / wedge.outputs), and {:g} is not a whole number of it: give an end that "
+                                 "is ({:.6g} gives {:.0f} outputs), or set wedge.outputs too",
+                                 dir.string(), spacing, after.get_float("wedge.s_end"), whole * spacing, whole));
+  return fmt::format("wedge.outputs={:.0f}", whole);
 }
 
-// The folder's configuration, with the --set overrides that extend a run (extension keys) or
-// change only how it goes (display keys), and no others.
-Config config_for_resume(const RunOptions& opt) {
+// A resume's --set overrides: those that extend the run (extension keys; a new wedge.s_end
+// alone keeps the outputs' spacing, so wedge.outputs follows it), and those that change only
+// how this process goes (display keys). Any other key is refused.
+struct ResumeOverrides {
+  std::vector<std::string> extending, display;
+};
+
+ResumeOverrides resume_overrides(const RunOptions& opt) {
   if (opt.config) throw UsageError("--resume takes its configuration from the run folder; drop CONFIG");
-  for (const auto& o : opt.overrides)
-    if (const std::string key = override_key(o); !is_extension_key(key) && !is_display_key(key))
+  ResumeOverrides r;
+  bool sets_end = false, sets_outputs = false;
+  for (const auto& o : opt.overrides) {
+    const std::string key = override_key(o);
+    if (is_extension_key(key)) {
+      r.extending.push_back(o);
+      sets_end |= key == "wedge.s_end";
+      sets_outputs |= key == "wedge.outputs";
+    } else if (is_display_key(key)) {
+      r.display.push_back(o);
+    } else {
       throw UsageError(fmt::format("--resume takes its configuration from the run folder; --set {} would change what "
                                    "the run computes (a resume may change only {}, to extend it, and the keys of "
                                    "speed and display such as run.threads and output.progress): start a new run instead",
                                    o, extension_keys_text()));
+    }
+  }
   if (!fs::is_directory(opt.out)) throw UsageError(fmt::format("--resume {}: no such folder", opt.out.string()));
   if (!fs::exists(opt.out / "config.toml"))
     throw UsageError(fmt::format("--resume {}: no run there (config.toml is missing)", opt.out.string()));
-  return Config::load(opt.out / "config.toml", opt.overrides);
+  if (sets_end && !sets_outputs) r.extending.push_back(outputs_keeping_spacing(opt.out, r.extending));
+  return r;
 }
 
 }  // namespace
@@ -554,7 +579,11 @@ int run_command(const RunOptions& opt) {
     if (opt.resume && opt.out.empty()) throw UsageError("--resume needs a run folder");
     if (opt.out.empty()) throw UsageError("--out needs a folder (got an empty one)");
     if (opt.resume && !opt.from.empty()) throw UsageError("--from starts a new run (a branch); drop --resume");
-    const Config config = opt.resume ? config_for_resume(opt) : Config::load(opt.config, opt.overrides);
+    const ResumeOverrides resume = opt.resume ? resume_overrides(opt) : ResumeOverrides{};
+    std::vector<std::string> resume_all = resume.extending;
+    resume_all.insert(resume_all.end(), resume.display.begin(), resume.display.end());
+    const Config config =
+        opt.resume ? Config::load(opt.out / "config.toml", resume_all) : Config::load(opt.config, opt.overrides);
     std::optional<BranchSource> source;
     if (!opt.from.empty()) {
       source = find_branch_source(opt.from);
@@ -582,7 +611,7 @@ int run_command(const RunOptions& opt) {
     if (opt.resume && !from_checkpoint) remove_run_outputs(opt.out);
 
     // A resume's configuration as stored: the folder's, with only the extension keys changed.
-    const std::vector<std::string> extending = opt.resume ? extension_overrides(opt) : std::vector<std::string>{};
+    const std::vector<std::string>& extending = resume.extending;
     const Config stored = opt.resume ? Config::load(opt.out / "config.toml", extending) : config;
     Run run(stored, opt.out, std::move(experiment), &config);
     run.abort_after_outputs(opt.abort_after_outputs);
