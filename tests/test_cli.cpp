@@ -786,6 +786,11 @@ TEST_F(Cli, AFinishedWedgeExtendedWithResumeEqualsOneRunToTheNewEnd) {
   EXPECT_NE(r.err.find("0.43 is not a whole number of it: give an end that is (0.45 gives 9 outputs)"),
             std::string::npos) << r.err;
   EXPECT_EQ(slurp(extended / "config.toml"), config_before);
+  // An earlier end would leave outputs past it: refused, nothing written.
+  r = orogen_cli("run --resume '" + extended.string() + "' --set wedge.s_end=0.1", dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("wedge.s_end = 0.1 is before the run's end, 0.2"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(extended / "config.toml"), config_before);
   // Keys of speed and display may come along; they hold for this resume and are not stored.
   r = orogen_cli("run --resume '" + extended.string() +
                      "' --set wedge.s_end=0.4 --set output.checkpoint_every=3 --set run.threads=2",

@@ -523,23 +523,30 @@ void release_new_run(const RunOptions& opt, RunFolderLock& lock) {
 
 std::string override_key(const std::string& assignment) { return assignment.substr(0, assignment.find('=')); }
 
-// "wedge.outputs=N" that keeps the spacing of a wedge run's outputs up to its new wedge.s_end.
-std::string outputs_keeping_spacing(const fs::path& dir, const std::vector<std::string>& extending) {
+// A resume's new wedge.s_end against the run's: never earlier (the outputs already written
+// would lie past the end). Without a new wedge.outputs (`keep_spacing`), it must be a whole
+// number of the run's output spacings; returns the "wedge.outputs=N" that keeps it.
+std::string check_new_end(const fs::path& dir, const std::vector<std::string>& extending, bool keep_spacing) {
   const Config before = Config::load(dir / "config.toml", {});
   const Config after = Config::load(dir / "config.toml", extending);
-  const double spacing = before.get_float("wedge.s_end") / static_cast<double>(before.get_int("wedge.outputs"));
-  const double outputs = after.get_float("wedge.s_end") / spacing;
+  const double old_end = before.get_float("wedge.s_end"), new_end = after.get_float("wedge.s_end");
+  if (new_end < old_end)
+    throw UsageError(fmt::format("--resume {}: wedge.s_end = {:g} is before the run's end, {:g}; a resume may only move "
+                                 "the end later (start a new run, or a branch with --from, for a shorter one)",
+                                 dir.string(), new_end, old_end));
+  const double spacing = old_end / static_cast<double>(before.get_int("wedge.outputs"));
+  const double outputs = new_end / spacing;
   const double whole = std::max(1.0, std::round(outputs));
-  if (std::abs(outputs - whole) > 1e-6 * whole)
+  if (keep_spacing && std::abs(outputs - whole) > 1e-6 * whole)
     throw UsageError(fmt::format("--resume {}: a new wedge.s_end alone keeps the run's output spacing (S = {:.6g}, "
                                  "wedge.s_end / wedge.outputs), and {:g} is not a whole number of it: give an end that "
                                  "is ({:.6g} gives {:.0f} outputs), or set wedge.outputs too",
-                                 dir.string(), spacing, after.get_float("wedge.s_end"), whole * spacing, whole));
+                                 dir.string(), spacing, new_end, whole * spacing, whole));
   return fmt::format("wedge.outputs={:.0f}", whole);
 }
 
 // A resume's --set overrides: those that extend the run (extension keys; a new wedge.s_end
-// alone keeps the outputs' spacing, so wedge.outputs follows it), and those that change only
+// is never earlier, and alone it keeps the outputs' spacing, so wedge.outputs follows it), and those that change only
 // how this process goes (display keys). Any other key is refused.
 struct ResumeOverrides {
   std::vector<std::string> extending, display;
@@ -567,7 +574,10 @@ ResumeOverrides resume_overrides(const RunOptions& opt) {
   if (!fs::is_directory(opt.out)) throw UsageError(fmt::format("--resume {}: no such folder", opt.out.string()));
   if (!fs::exists(opt.out / "config.toml"))
     throw UsageError(fmt::format("--resume {}: no run there (config.toml is missing)", opt.out.string()));
-  if (sets_end && !sets_outputs) r.extending.push_back(outputs_keeping_spacing(opt.out, r.extending));
+  if (sets_end) {
+    const std::string outputs = check_new_end(opt.out, r.extending, !sets_outputs);
+    if (!sets_outputs) r.extending.push_back(outputs);
+  }
   return r;
 }
 
