@@ -3,7 +3,7 @@
 docs/exhumation-evidence.md is made of these).
 
 Usage:
-    /usr/bin/python3 python/exhumation_summary.py RUN [RUN ...] [--json FILE]
+    /usr/bin/python3 python/exhumation_summary.py RUN [RUN ...] [--json FILE] [--cycle] [--flux-table WIDTH]
 
 Each RUN is a wedge run folder that `orogen analyze` has analysed (analysis.h5, series.csv).
 Per run, with "after" meaning the outputs from the flux steady state on:
@@ -25,6 +25,15 @@ Per run, with "after" meaning the outputs from the flux steady state on:
     jumps         correlation of x with the jump count and with the mean jump at h over the
                   eroding columns retro-ward of the column with the most jumps (the thesis: count
                   falls and mean jump rises toward the retro side)
+
+With --cycle, each run also gets the pro-front cycle before and after the steady state, counted
+from the step-outs: how many step-outs have an output of low erosion at the step-out or in the
+two outputs before it, against the chance that a window of three outputs of that phase holds
+one; the outputs of low erosion; the eroded flux at step-outs against the other outputs.
+
+With --flux-table WIDTH, each run also gets a table of its eroded flux against the incoming
+flux (flux_ratio: the mean over the analysis's flux_window) in stretches of WIDTH in S from the
+first erosion on: mean (min-max) per stretch.
 """
 
 import argparse
@@ -138,11 +147,91 @@ def markdown(rows):
     return head + "\n".join(lines) + "\n"
 
 
+def cycle_phases(run):
+    """The pro-front cycle counted from its step-outs, before and after the flux steady state
+    (before: from the first erosion; without a steady state, "before" is every output from the
+    first erosion on and "after" is empty): a dict per phase."""
+    ds = oa.load(run)
+    return phases_of_cycle(oa.pro_cycle(run, ds), oa.steady_output(ds))
+
+
+def phases_of_cycle(cycle, k0):
+    """cycle_phases of an orogen_analysis.pro_cycle table with steady output k0 (None: none)."""
+    m = len(cycle)
+    step, low, flux = cycle.step_out.to_numpy(), cycle.low.to_numpy(), cycle.flux.to_numpy()
+    begun = np.flatnonzero(cycle.eroded_area.to_numpy() > 0)
+    first = int(begun[0]) if begun.size else m
+    k0 = m if k0 is None else min(k0, m)
+    # A window of three outputs ending at k: k - 2 .. k.
+    low_in_window = np.array([bool(low[max(k - 2, 0):k + 1].any()) for k in range(m)])
+    phases = {}
+    for name, lo, hi in (("before", first, max(first, k0)), ("after", max(first, k0), m)):
+        a = np.zeros(m, dtype=bool)
+        a[lo:hi] = True
+        steps = step & a
+        phases[name] = {
+            "outputs": [lo, hi - 1] if hi > lo else None,
+            "step_outs": int(steps.sum()),
+            "step_outs_after_low": int((steps & low_in_window).sum()),
+            "window_chance": float(low_in_window[a].mean()) if a.any() else float("nan"),
+            "low_outputs": int((low & a).sum()),
+            "flux_at_steps": float(np.nanmean(flux[steps])) if steps.any() else float("nan"),
+            "flux_otherwise": float(np.nanmean(flux[a & ~step])) if (a & ~step).any() else float("nan"),
+        }
+    return phases
+
+
+def cycle_table(run):
+    name = os.path.basename(os.path.normpath(run))
+    head = (f"| {name}: phase | outputs | step-outs | after low erosion (chance) | low-erosion outputs | "
+            "flux at step-outs / otherwise [flux in] |\n|---|---|---:|---|---:|---|\n")
+    lines = []
+    for phase, r in cycle_phases(run).items():
+        span = f"{r['outputs'][0]}-{r['outputs'][1]}" if r["outputs"] else "-"
+        lines.append(f"| {phase} the steady state | {span} | {r['step_outs']} | {r['step_outs_after_low']} "
+                     f"({fmt(r['window_chance'], 2)}) | {r['low_outputs']} | {fmt(r['flux_at_steps'], 2)} / "
+                     f"{fmt(r['flux_otherwise'], 2)} |")
+    return head + "\n".join(lines) + "\n"
+
+
+def flux_stretches(run, width):
+    """(S from, S to, mean, min, max) of flux_ratio per stretch of `width` in S, from the stretch
+    in which erosion begins to the last analysed output."""
+    ds = oa.load(run)
+    s, ratio = ds.S.values, ds.flux_ratio.values
+    begun = np.flatnonzero(ds.cum_eroded_area.sum("column").values > 0)
+    if begun.size == 0:
+        return []
+    rows = []
+    lo = np.floor(s[begun[0]] / width) * width
+    while lo < s[-1]:
+        hi = min(lo + width, s[-1])
+        r = ratio[(s >= lo) & (s < lo + width)]
+        r = r[np.isfinite(r)]
+        if r.size:
+            rows.append((float(lo), float(hi), float(r.mean()), float(r.min()), float(r.max())))
+        lo += width
+    return rows
+
+
+def flux_table(run, width):
+    rows = flux_stretches(run, width)
+    name = os.path.basename(os.path.normpath(run))
+    return (f"| {name}: S | " + " | ".join(f"{r[0]:.3g}-{r[1]:.3g}" for r in rows) + " |\n"
+            "|---|" + "---|" * len(rows) + "\n"
+            "| flux out / flux in, mean (min-max) | "
+            + " | ".join(f"{m:.2f} ({a:.2g}-{b:.2g})" for _, _, m, a, b in rows) + " |\n")
+
+
 def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("runs", nargs="+")
     p.add_argument("--closure", type=float, default=0.3, help="closure depth of the age figures [h0] (nearest)")
     p.add_argument("--json", help="also write the numbers here")
+    p.add_argument("--cycle", action="store_true",
+                   help="also print each run's pro-front cycle before and after the steady state")
+    p.add_argument("--flux-table", type=float, metavar="WIDTH",
+                   help="also print each run's flux out / flux in by stretches of WIDTH in S")
     a = p.parse_args(argv)
     for run in a.runs:
         if not os.path.exists(oa.analysis_path(run)):
@@ -150,6 +239,12 @@ def main(argv):
             return 2
     rows = [indicators(run, a.closure) for run in a.runs]
     sys.stdout.write(markdown(rows))
+    if a.cycle:
+        for run in a.runs:
+            sys.stdout.write("\n" + cycle_table(run))
+    if a.flux_table:
+        for run in a.runs:
+            sys.stdout.write("\n" + flux_table(run, a.flux_table))
     if a.json:
         with open(a.json, "w") as f:
             json.dump(rows, f, indent=1)

@@ -52,6 +52,25 @@ class ProCycle(unittest.TestCase):
         # Low erosion counts only once erosion has begun (output 2): outputs 3 and 4.
         self.assertEqual(list(cycle.low), [False, False, False, True, True, False])
 
+        # With the steady state at output 4: before is outputs 2-3 (from the first erosion),
+        # after 4-5. The step-out at 2 has no low output in 0-2; the one at 5 has 3 and 4.
+        phases = exhumation_summary.phases_of_cycle(cycle, 4)
+        before, after = phases["before"], phases["after"]
+        self.assertEqual((before["outputs"], after["outputs"]), ([2, 3], [4, 5]))
+        self.assertEqual((before["step_outs"], before["step_outs_after_low"]), (1, 0))
+        self.assertEqual((after["step_outs"], after["step_outs_after_low"]), (1, 1))
+        # Windows of three ending at 2, 3 (one of two holds a low output); at 4, 5 (both).
+        self.assertEqual((before["window_chance"], after["window_chance"]), (0.5, 1.0))
+        self.assertEqual((before["low_outputs"], after["low_outputs"]), (1, 1))
+        self.assertAlmostEqual(before["flux_at_steps"], 0.5)
+        self.assertAlmostEqual(before["flux_otherwise"], 0.2)
+        self.assertAlmostEqual(after["flux_at_steps"], 0.95)
+        self.assertAlmostEqual(after["flux_otherwise"], 0.1)
+        # No steady state: every output from the first erosion is "before".
+        phases = exhumation_summary.phases_of_cycle(cycle, None)
+        self.assertEqual((phases["before"]["outputs"], phases["after"]["outputs"]), ([2, 5], None))
+        self.assertEqual(phases["before"]["step_outs"], 2)
+
 
 @unittest.skipUnless(BINARY and os.path.exists(BINARY), "OROGEN_BINARY not set")
 class ExhumationCharts(unittest.TestCase):
@@ -81,6 +100,26 @@ class ExhumationCharts(unittest.TestCase):
         table = exhumation_summary.markdown([row])
         self.assertEqual(len(table.strip().splitlines()), 3)
         self.assertEqual(exhumation_summary.main([os.path.join(self.tmp, "missing")]), 2)
+
+    def test_flux_table_holds_the_ratio_per_stretch(self):
+        # A window of 2 outputs, so that this short run has a flux ratio from its third output.
+        run = os.path.join(self.tmp, "run_window2")
+        shutil.copytree(self.run_dir, run, ignore=shutil.ignore_patterns("analysis*"))
+        subprocess.run([BINARY, "analyze", run, "--flux-window", "2"], check=True, capture_output=True)
+        ds = orogen_analysis.load(run)
+        s, ratio = ds.S.values, ds.flux_ratio.values
+        width = float(s[-1] - s[0]) / 2
+        rows = exhumation_summary.flux_stretches(run, width)
+        self.assertGreaterEqual(len(rows), 1)
+        # Every stretch's numbers are those of flux_ratio over its outputs.
+        for start, _, mean, lo, hi in rows:
+            r = ratio[(s >= start) & (s < start + width) & np.isfinite(ratio)]
+            self.assertAlmostEqual(mean, float(r.mean()))
+            self.assertEqual((lo, hi), (float(r.min()), float(r.max())))
+        table = exhumation_summary.flux_table(run, width)
+        self.assertEqual(len(table.strip().splitlines()), 3)
+        # The cycle table: a header, a rule, a row per phase.
+        self.assertEqual(len(exhumation_summary.cycle_table(run).strip().splitlines()), 4)
 
     def test_loader_gives_labelled_dataset(self):
         ds = orogen_analysis.load(self.run_dir)
