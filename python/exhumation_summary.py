@@ -3,7 +3,8 @@
 docs/exhumation-evidence.md is made of these).
 
 Usage:
-    /usr/bin/python3 python/exhumation_summary.py RUN [RUN ...] [--json FILE] [--cycle] [--flux-table WIDTH]
+    /usr/bin/python3 python/exhumation_summary.py RUN [RUN ...] [--json FILE] [--cycle] [--ages N]
+                                                   [--flux-table WIDTH]
 
 Each RUN is a wedge run folder that `orogen analyze` has analysed (analysis.h5, series.csv).
 Per run, with "after" meaning the outputs from the flux steady state on:
@@ -30,6 +31,12 @@ With --cycle, each run also gets the pro-front cycle before and after the steady
 from the step-outs: how many step-outs have an output of low erosion at the step-out or in the
 two outputs before it, against the chance that a window of three outputs of that phase holds
 one; the outputs of low erosion; the eroded flux at step-outs against the other outputs.
+
+With --ages N, each run also gets the surface ages at N positions spread evenly over the eroding
+columns (pro to retro), per closure depth: the S at which reset material (surface_unreset 0)
+first reaches the surface there, and the mean surface age from then on, with the means of the
+first and second halves of that time (about equal: the age oscillates about a constant value,
+thesis 6.5.2, Fig. 6.17).
 
 With --flux-table WIDTH, each run also gets a table of its eroded flux against the incoming
 flux (flux_ratio: the mean over the analysis's flux_window) in stretches of WIDTH in S from the
@@ -130,6 +137,10 @@ def fmt(v, digits=3):
     return f"{v:.{digits}g}" if isinstance(v, float) else str(v)
 
 
+def whole(v):
+    return f"{v:.0f}" if np.isfinite(v) else "-"
+
+
 def markdown(rows):
     head = ("| run | steady output (S) | Dr rate before / after | pro step-outs after | flux at step-outs / "
             "otherwise [flux in] | low-erosion outputs near a step-out (chance) | x max erosion / deepest [h0] | "
@@ -194,6 +205,59 @@ def cycle_table(run):
     return head + "\n".join(lines) + "\n"
 
 
+def eroding_positions(ds, n):
+    """n x values spread evenly from the pro to the retro edge of the eroding columns (those
+    with at least 5% of the largest cumulative erosion at the last output), at their columns."""
+    x = ds.column.values
+    cum = ds.cum_eroded_area.isel(time=-1).values
+    eroding = x[cum > 0.05 * np.nanmax(cum)]
+    return [float(x[np.argmin(np.abs(x - v))]) for v in np.linspace(eroding.min(), eroding.max(), n)]
+
+
+def age_settling(ds, xs):
+    """Per closure depth and x (nearest column): {closure, x, S_reset, mean, first_half,
+    second_half}, S_reset the S of the first output with reset material at the surface (None:
+    never), the means over the outputs from then on (NaN ages, empty columns, left out)."""
+    s = ds.S.values
+    rows = []
+    for h in ds.closure.values:
+        for x in xs:
+            col = dict(closure=h, column=x)
+            age = ds.surface_age.sel(col, method="nearest").values.astype(float)
+            reset = ds.surface_unreset.sel(col, method="nearest").values == 0
+            reset &= np.isfinite(age)
+            row = {"closure": float(h), "x": float(x), "S_reset": None, "mean": float("nan"),
+                   "first_half": float("nan"), "second_half": float("nan")}
+            if reset.any():
+                k = int(np.argmax(reset))
+                later = age[k:][np.isfinite(age[k:])]
+                half = len(later) // 2
+                row.update(S_reset=float(s[k]), mean=float(later.mean()),
+                           first_half=float(later[:half].mean()) if half else float("nan"),
+                           second_half=float(later[half:].mean()))
+            rows.append(row)
+    return rows
+
+
+def ages_table(run, n):
+    ds = oa.load(run)
+    xs = eroding_positions(ds, n)
+    rows = age_settling(ds, xs)
+    name = os.path.basename(os.path.normpath(run))
+    closures = [float(h) for h in ds.closure.values]
+    head = (f"| {name}: x [h0] | " + " | ".join(f"h = {h:g} h0: S reset, mean age (halves)" for h in closures)
+            + " |\n|---|" + "---|" * len(closures) + "\n")
+    lines = []
+    for x in xs:
+        cells = []
+        for h in closures:
+            r = next(r for r in rows if r["x"] == x and r["closure"] == h)
+            cells.append("never reset" if r["S_reset"] is None else
+                         f"{r['S_reset']:.1f}, {r['mean']:.0f} ({whole(r['first_half'])}, {whole(r['second_half'])})")
+        lines.append(f"| {x:.2f} | " + " | ".join(cells) + " |")
+    return head + "\n".join(lines) + "\n"
+
+
 def flux_stretches(run, width):
     """(S from, S to, mean, min, max) of flux_ratio per stretch of `width` in S, from the stretch
     in which erosion begins to the last analysed output."""
@@ -230,6 +294,8 @@ def main(argv):
     p.add_argument("--json", help="also write the numbers here")
     p.add_argument("--cycle", action="store_true",
                    help="also print each run's pro-front cycle before and after the steady state")
+    p.add_argument("--ages", type=int, metavar="N",
+                   help="also print each run's surface ages at N positions across the eroding columns")
     p.add_argument("--flux-table", type=float, metavar="WIDTH",
                    help="also print each run's flux out / flux in by stretches of WIDTH in S")
     a = p.parse_args(argv)
@@ -242,6 +308,9 @@ def main(argv):
     if a.cycle:
         for run in a.runs:
             sys.stdout.write("\n" + cycle_table(run))
+    if a.ages:
+        for run in a.runs:
+            sys.stdout.write("\n" + ages_table(run, a.ages))
     if a.flux_table:
         for run in a.runs:
             sys.stdout.write("\n" + flux_table(run, a.flux_table))

@@ -72,6 +72,33 @@ class ProCycle(unittest.TestCase):
         self.assertEqual(phases["before"]["step_outs"], 2)
 
 
+class AgeSettling(unittest.TestCase):
+    """exhumation_summary.age_settling on a synthetic surface with known answers."""
+
+    def test_first_reset_and_means_of_the_halves(self):
+        s = np.arange(6) * 0.5
+        # Two columns, one closure depth. Column 0: un-reset ageing until output 2, then
+        # reset ages 10, 20, NaN (empty), 30. Column 1: never reset.
+        age = np.array([[[0.0, 0]], [[1, 1]], [[10, 2]], [[20, 3]], [[np.nan, 4]], [[30, 5]]])
+        unreset = np.array([[[1, 1]], [[1, 1]], [[0, 1]], [[0, 1]], [[0, 1]], [[0, 1]]], dtype=np.uint8)
+        cum = np.array([[0, 0]] * 5 + [[4.0, 1.0]])
+        ds = xr.Dataset({"S": ("time", s),
+                         "surface_age": (("time", "closure", "column"), age),
+                         "surface_unreset": (("time", "closure", "column"), unreset),
+                         "cum_eroded_area": (("time", "column"), cum)},
+                        coords={"column": [-1.0, 1.0], "closure": [0.3]})
+        self.assertEqual(exhumation_summary.eroding_positions(ds, 2), [-1.0, 1.0])
+        rows = exhumation_summary.age_settling(ds, [-1.0, 1.0])
+        first, never = rows
+        self.assertEqual((first["x"], first["closure"], first["S_reset"]), (-1.0, 0.3, 1.0))
+        # From output 2 on, the finite ages 10, 20, 30: mean 20; halves (10) and (20, 30).
+        self.assertAlmostEqual(first["mean"], 20.0)
+        self.assertAlmostEqual(first["first_half"], 10.0)
+        self.assertAlmostEqual(first["second_half"], 25.0)
+        self.assertIsNone(never["S_reset"])
+        self.assertTrue(np.isnan(never["mean"]))
+
+
 @unittest.skipUnless(BINARY and os.path.exists(BINARY), "OROGEN_BINARY not set")
 class ExhumationCharts(unittest.TestCase):
     @classmethod
@@ -118,6 +145,8 @@ class ExhumationCharts(unittest.TestCase):
             self.assertEqual((lo, hi), (float(r.min()), float(r.max())))
         table = exhumation_summary.flux_table(run, width)
         self.assertEqual(len(table.strip().splitlines()), 3)
+        # The ages table: a header, a rule, a row per position.
+        self.assertEqual(len(exhumation_summary.ages_table(run, 3).strip().splitlines()), 5)
         # The cycle table: a header, a rule, a row per phase.
         self.assertEqual(len(exhumation_summary.cycle_table(run).strip().splitlines()), 4)
 
