@@ -207,9 +207,12 @@ def cycle_table(run):
 
 def eroding_positions(ds, n):
     """n x values spread evenly from the pro to the retro edge of the eroding columns (those
-    with at least 5% of the largest cumulative erosion at the last output), at their columns."""
+    with at least 5% of the largest cumulative erosion at the last output), at their columns;
+    none in a run that has eroded nothing."""
     x = ds.column.values
     cum = ds.cum_eroded_area.isel(time=-1).values
+    if not np.nanmax(cum, initial=0.0) > 0:
+        return []
     eroding = x[cum > 0.05 * np.nanmax(cum)]
     return [float(x[np.argmin(np.abs(x - v))]) for v in np.linspace(eroding.min(), eroding.max(), n)]
 
@@ -244,6 +247,8 @@ def ages_table(run, n):
     xs = eroding_positions(ds, n)
     rows = age_settling(ds, xs)
     name = os.path.basename(os.path.normpath(run))
+    if not xs:
+        return f"{name}: no column has eroded, so no surface ages to settle\n"
     closures = [float(h) for h in ds.closure.values]
     head = (f"| {name}: x [h0] | " + " | ".join(f"h = {h:g} h0: S reset, mean age (halves)" for h in closures)
             + " |\n|---|" + "---|" * len(closures) + "\n")

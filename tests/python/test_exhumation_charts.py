@@ -88,6 +88,7 @@ class AgeSettling(unittest.TestCase):
                          "cum_eroded_area": (("time", "column"), cum)},
                         coords={"column": [-1.0, 1.0], "closure": [0.3]})
         self.assertEqual(exhumation_summary.eroding_positions(ds, 2), [-1.0, 1.0])
+        self.assertEqual(exhumation_summary.eroding_positions(ds.isel(time=slice(0, 5)), 2), [])
         rows = exhumation_summary.age_settling(ds, [-1.0, 1.0])
         first, never = rows
         self.assertEqual((first["x"], first["closure"], first["S_reset"]), (-1.0, 0.3, 1.0))
