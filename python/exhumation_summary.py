@@ -73,8 +73,14 @@ def corr(x, y):
     return float(np.corrcoef(x[ok], y[ok])[0, 1]) if ok.sum() >= 3 else float("nan")
 
 
-def indicators(run, closure=0.3):
-    ds = oa.load(run)
+def eroding_columns(ds):
+    """Mask of the columns with at least 5% of the largest cumulative erosion at the last output."""
+    cum = ds.cum_eroded_area.isel(time=-1).values
+    return cum > 0.05 * np.nanmax(cum)
+
+
+def indicators(run, closure=0.3, ds=None):
+    ds = oa.load(run) if ds is None else ds
     series = read_series(run, ds.sizes["time"])
     s = ds.S.values
     k0 = oa.steady_output(ds)
@@ -111,7 +117,7 @@ def indicators(run, closure=0.3):
     out["x_deepest"] = float(x[np.nanargmax(maxdepth)])
 
     # Surface ages over the eroding columns after the steady state.
-    eroding = cum > 0.05 * np.nanmax(cum)
+    eroding = eroding_columns(ds)
     age = ds.surface_age.sel(closure=closure, method="nearest").isel(time=after).values[:, eroding]
     mean_age = np.nanmean(age, axis=1)
     out["closure"] = float(ds.closure.sel(closure=closure, method="nearest"))
@@ -158,11 +164,11 @@ def markdown(rows):
     return head + "\n".join(lines) + "\n"
 
 
-def cycle_phases(run):
+def cycle_phases(run, ds=None):
     """The pro-front cycle counted from its step-outs, before and after the flux steady state
     (before: from the first erosion; without a steady state, "before" is every output from the
     first erosion on and "after" is empty): a dict per phase."""
-    ds = oa.load(run)
+    ds = oa.load(run) if ds is None else ds
     return phases_of_cycle(oa.pro_cycle(run, ds), oa.steady_output(ds))
 
 
@@ -192,12 +198,12 @@ def phases_of_cycle(cycle, k0):
     return phases
 
 
-def cycle_table(run):
+def cycle_table(run, ds=None):
     name = os.path.basename(os.path.normpath(run))
     head = (f"| {name}: phase | outputs | step-outs | after low erosion (chance) | low-erosion outputs | "
             "flux at step-outs / otherwise [flux in] |\n|---|---|---:|---|---:|---|\n")
     lines = []
-    for phase, r in cycle_phases(run).items():
+    for phase, r in cycle_phases(run, ds).items():
         span = f"{r['outputs'][0]}-{r['outputs'][1]}" if r["outputs"] else "-"
         lines.append(f"| {phase} the steady state | {span} | {r['step_outs']} | {r['step_outs_after_low']} "
                      f"({fmt(r['window_chance'], 2)}) | {r['low_outputs']} | {fmt(r['flux_at_steps'], 2)} / "
@@ -210,10 +216,9 @@ def eroding_positions(ds, n):
     with at least 5% of the largest cumulative erosion at the last output), at their columns;
     none in a run that has eroded nothing."""
     x = ds.column.values
-    cum = ds.cum_eroded_area.isel(time=-1).values
-    if not np.nanmax(cum, initial=0.0) > 0:
+    if not np.nanmax(ds.cum_eroded_area.isel(time=-1).values, initial=0.0) > 0:
         return []
-    eroding = x[cum > 0.05 * np.nanmax(cum)]
+    eroding = x[eroding_columns(ds)]
     return [float(x[np.argmin(np.abs(x - v))]) for v in np.linspace(eroding.min(), eroding.max(), n)]
 
 
@@ -242,8 +247,8 @@ def age_settling(ds, xs):
     return rows
 
 
-def ages_table(run, n):
-    ds = oa.load(run)
+def ages_table(run, n, ds=None):
+    ds = oa.load(run) if ds is None else ds
     xs = eroding_positions(ds, n)
     rows = age_settling(ds, xs)
     name = os.path.basename(os.path.normpath(run))
@@ -263,10 +268,10 @@ def ages_table(run, n):
     return head + "\n".join(lines) + "\n"
 
 
-def flux_stretches(run, width):
+def flux_stretches(run, width, ds=None):
     """(S from, S to, mean, min, max) of flux_ratio per stretch of `width` in S, from the stretch
     in which erosion begins to the last analysed output."""
-    ds = oa.load(run)
+    ds = oa.load(run) if ds is None else ds
     s, ratio = ds.S.values, ds.flux_ratio.values
     begun = np.flatnonzero(ds.cum_eroded_area.sum("column").values > 0)
     if begun.size == 0:
@@ -283,8 +288,8 @@ def flux_stretches(run, width):
     return rows
 
 
-def flux_table(run, width):
-    rows = flux_stretches(run, width)
+def flux_table(run, width, ds=None):
+    rows = flux_stretches(run, width, ds)
     name = os.path.basename(os.path.normpath(run))
     return (f"| {name}: S | " + " | ".join(f"{r[0]:.3g}-{r[1]:.3g}" for r in rows) + " |\n"
             "|---|" + "---|" * len(rows) + "\n"
@@ -308,17 +313,20 @@ def main(argv):
         if not os.path.exists(oa.analysis_path(run)):
             print(f"exhumation_summary: {run} has no analysis.h5 (run `orogen analyze {run}` first)", file=sys.stderr)
             return 2
-    rows = [indicators(run, a.closure) for run in a.runs]
+    # Each analysis is loaded once (a long run's analysis.h5 is over a gigabyte).
+    rows, tables = [], []
+    for run in a.runs:
+        ds = oa.load(run)
+        rows.append(indicators(run, a.closure, ds))
+        if a.cycle:
+            tables.append(cycle_table(run, ds))
+        if a.ages:
+            tables.append(ages_table(run, a.ages, ds))
+        if a.flux_table:
+            tables.append(flux_table(run, a.flux_table, ds))
     sys.stdout.write(markdown(rows))
-    if a.cycle:
-        for run in a.runs:
-            sys.stdout.write("\n" + cycle_table(run))
-    if a.ages:
-        for run in a.runs:
-            sys.stdout.write("\n" + ages_table(run, a.ages))
-    if a.flux_table:
-        for run in a.runs:
-            sys.stdout.write("\n" + flux_table(run, a.flux_table))
+    for table in tables:
+        sys.stdout.write("\n" + table)
     if a.json:
         with open(a.json, "w") as f:
             json.dump(rows, f, indent=1)

@@ -546,8 +546,8 @@ std::string check_new_end(const fs::path& dir, const std::vector<std::string>& e
 }
 
 // A resume's --set overrides: those that extend the run (extension keys; a new wedge.s_end
-// is never earlier, and alone it keeps the outputs' spacing, so wedge.outputs follows it), and those that change only
-// how this process goes (display keys). Any other key is refused.
+// is never earlier, and alone it keeps the outputs' spacing, so wedge.outputs follows it),
+// and those that change only how this process goes (display keys). Any other key is refused.
 struct ResumeOverrides {
   std::vector<std::string> extending, display;
 };
