@@ -309,6 +309,12 @@ def main(argv):
     p.add_argument("--flux-table", type=float, metavar="WIDTH",
                    help="also print each run's flux out / flux in by stretches of WIDTH in S")
     a = p.parse_args(argv)
+    if a.ages is not None and a.ages < 1:
+        print(f"exhumation_summary: --ages {a.ages}: must be at least 1 (positions)", file=sys.stderr)
+        return 2
+    if a.flux_table is not None and not a.flux_table > 0:
+        print(f"exhumation_summary: --flux-table {a.flux_table}: must be a width in S above 0", file=sys.stderr)
+        return 2
     for run in a.runs:
         if not os.path.exists(oa.analysis_path(run)):
             print(f"exhumation_summary: {run} has no analysis.h5 (run `orogen analyze {run}` first)", file=sys.stderr)

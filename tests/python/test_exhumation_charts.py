@@ -128,6 +128,8 @@ class ExhumationCharts(unittest.TestCase):
         table = exhumation_summary.markdown([row])
         self.assertEqual(len(table.strip().splitlines()), 3)
         self.assertEqual(exhumation_summary.main([os.path.join(self.tmp, "missing")]), 2)
+        self.assertEqual(exhumation_summary.main([self.run_dir, "--ages", "0"]), 2)
+        self.assertEqual(exhumation_summary.main([self.run_dir, "--flux-table", "-1"]), 2)
 
     def test_flux_table_holds_the_ratio_per_stretch(self):
         # A window of 2 outputs, so that this short run has a flux ratio from its third output.
