@@ -3,9 +3,12 @@
 // contacts; along the wall it is smooth, rough (tangential spring with its own Coulomb limit
 // and history), or a traction belt that drags touching discs toward its surface velocity
 // (the thesis's basal traction condition, eq. 4.1, capped by the Coulomb limit).
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "util/select.hpp"
 
 namespace orogen {
 
@@ -24,7 +27,30 @@ struct Wall {
   double length() const;
 };
 
-// Closest point of segment (a, b) to p; returns the squared distance.
-double closest_point_on_segment(const Wall& w, double px, double py, double& cx, double& cy);
+// A wall's segment as the distance tests use it: start point, the vector a -> b and its
+// squared length.
+struct Segment {
+  double ax, ay, ex, ey, len2;
+};
+
+inline Segment segment(const Wall& w) {
+  const double ex = w.bx - w.ax, ey = w.by - w.ay;
+  return {w.ax, w.ay, ex, ey, ex * ex + ey * ey};
+}
+
+// Closest point (cx, cy) of the segment to p; returns the squared distance. Without
+// branches: the wall force loop runs it in vector lanes.
+inline double closest_point(const Segment& g, double px, double py, double& cx, double& cy) {
+  const double along = ((px - g.ax) * g.ex + (py - g.ay) * g.ey) / g.len2;
+  const double s = std::clamp(select(g.len2 > 0, along, 0.0), 0.0, 1.0);
+  cx = g.ax + s * g.ex;
+  cy = g.ay + s * g.ey;
+  const double dx = px - cx, dy = py - cy;
+  return dx * dx + dy * dy;
+}
+
+inline double closest_point_on_segment(const Wall& w, double px, double py, double& cx, double& cy) {
+  return closest_point(segment(w), px, py, cx, cy);
+}
 
 }  // namespace orogen

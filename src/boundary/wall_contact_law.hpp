@@ -2,12 +2,15 @@
 // The law of one disc-wall contact (MODEL §3 with the wall's friction kind), as a pure
 // function of the disc, the wall and the contact's history: the force stage
 // (boundary/wall_forces.cpp) and the contact output (analysis/contact_forces.cpp) both call
-// it, so the stored forces are bitwise those the next step applies.
+// it, so the stored forces are bitwise those the next step applies. Without branches, as the
+// pair kernel: the force stage runs it in the lanes of a vector loop over one wall's contacts.
 #include <cmath>
+#include <type_traits>
 
 #include "boundary/wall.hpp"
 #include "contact/contact_law.hpp"
 #include "contact/law_kernels.hpp"
+#include "util/select.hpp"
 
 namespace orogen {
 
@@ -20,48 +23,86 @@ struct WallContactForce {
   double xi = 0;          // history after the step (0 when apart or smooth)
 };
 
+// What the law needs of a wall, worked out once per wall and force pass rather than per
+// contact (the segment's length is a hypot).
+struct WallFrame {
+  Segment segment;
+  double wvx, wvy;              // velocity of the wall's surface: the wall's own plus its belt's
+  double mu, traction_gamma;
+};
+
+inline WallFrame wall_frame(const Wall& w) {
+  const Segment g = segment(w);
+  const double len = w.length();
+  const double ux = len > 0 ? g.ex / len : 0, uy = len > 0 ? g.ey / len : 0;
+  return {g, w.vx + w.surface_speed * ux, w.vy + w.surface_speed * uy, w.mu,
+          w.traction_gamma};
+}
+
 // Disc at (x, y) with velocity (vx, vy), spin omega and radius r; gamma_n, mass and xi_old
-// are the contact's own (WallContacts, contact/contact_store.hpp). Normal is a registered normal law
-// (contact/normal_laws.hpp); the tangential law is the wall's friction kind, each built from
-// the kernels of contact/law_kernels.hpp that the pair kernel uses too.
+// are the contact's own (WallContacts, contact/contact_store.hpp). Normal is a registered
+// normal law (contact/normal_laws.hpp); kFriction the wall's friction kind, each built from
+// the kernels of contact/law_kernels.hpp that the pair kernel uses too. A disc apart from the
+// wall (or exactly on it, with no normal) gets zeros; its values are computed and masked.
+template <class Normal, WallFriction kFriction>
+inline WallContactForce wall_contact_lane(const WallFrame& f, double x, double y, double vx, double vy, double omega,
+                                          double r, double gamma_n, double mass, double xi_old, double kn, double ks,
+                                          double damping_ratio, double dt) {
+  double cx, cy;
+  const double dist2 = closest_point(f.segment, x, y, cx, cy);
+  const bool touching = !(dist2 >= r * r) & (dist2 != 0.0);
+  const double dist = std::sqrt(dist2);
+  const double nx = (x - cx) / dist, ny = (y - cy) / dist;  // wall -> disc
+  const double tx = -ny, ty = nx;
+  const double delta = r - dist;
+  // Velocity of the disc's contact point (at -r n) relative to the wall's surface.
+  const double rvx = vx - omega * r * tx - f.wvx;
+  const double rvy = vy - omega * r * ty - f.wvy;
+  const double vn = rvx * nx + rvy * ny;  // > 0 when separating
+  const double vt = rvx * tx + rvy * ty;
+  const double fn = Normal::force(kn, delta, gamma_n, vn, r);  // a wall: the disc's radius
+  const double limit = f.mu * Normal::load(fn);
+  Tangential t{0.0, 0.0, false};  // smooth: no tangential force, no history
+  if constexpr (kFriction == WallFriction::Rough) {
+    t = tangential_spring(xi_old, vt, dt, ks, damping_ratio * gamma_n, limit);
+  } else if constexpr (kFriction == WallFriction::Traction) {
+    // Eq. 4.1 with the drag taken implicitly over the step, gamma / (1 + gamma dt / m):
+    // stable for any gamma, and at most the force that brings a free disc to the
+    // plate's speed in one step. Traction keeps no spring; the history is left as it was.
+    t = viscous_traction(f.traction_gamma / (1.0 + f.traction_gamma * dt / mass), vt, limit, xi_old);
+  }
+  WallContactForce c;
+  c.touching = touching;
+  c.at_limit = touching & t.slip;
+  c.cx = cx; c.cy = cy;
+  c.nx = select(touching, nx, 0.0); c.ny = select(touching, ny, 0.0);
+  c.delta = select(touching, delta, 0.0);
+  c.fn = select(touching, fn, 0.0); c.ft = select(touching, t.ft, 0.0);
+  c.xi = select(touching, t.xi, 0.0);
+  return c;
+}
+
+// Calls f(std::integral_constant<WallFriction, kind>{}) with the wall's friction kind, so
+// that a loop over one wall's contacts is compiled once per kind, without a branch inside.
+template <class F>
+void with_wall_friction(WallFriction kind, F&& f) {
+  switch (kind) {
+    case WallFriction::Smooth: f(std::integral_constant<WallFriction, WallFriction::Smooth>{}); break;
+    case WallFriction::Rough: f(std::integral_constant<WallFriction, WallFriction::Rough>{}); break;
+    case WallFriction::Traction: f(std::integral_constant<WallFriction, WallFriction::Traction>{}); break;
+  }
+}
+
+// The same law for one contact, for callers outside the force loop (the contact output).
 template <class Normal>
 inline WallContactForce wall_contact_force(const Wall& w, double x, double y, double vx, double vy, double omega,
                                            double r, double gamma_n, double mass, double xi_old,
                                            const ContactLaw& law, double dt) {
   WallContactForce c;
-  const double dist2 = closest_point_on_segment(w, x, y, c.cx, c.cy);
-  if (dist2 >= r * r || dist2 == 0.0) return c;
-  const double dist = std::sqrt(dist2);
-  const double nx = (x - c.cx) / dist, ny = (y - c.cy) / dist;  // wall -> disc
-  const double tx = -ny, ty = nx;
-  const double delta = r - dist;
-  // Velocity of the disc's contact point (at -r n) relative to the wall's surface.
-  const double len = w.length();
-  const double ex = len > 0 ? (w.bx - w.ax) / len : 0, ey = len > 0 ? (w.by - w.ay) / len : 0;
-  const double wvx = w.vx + w.surface_speed * ex, wvy = w.vy + w.surface_speed * ey;
-  const double rvx = vx - omega * r * tx - wvx;
-  const double rvy = vy - omega * r * ty - wvy;
-  const double vn = rvx * nx + rvy * ny;  // > 0 when separating
-  const double vt = rvx * tx + rvy * ty;
-  const double fn = Normal::force(law.kn, delta, gamma_n, vn, r);  // a wall: the disc's radius
-  const double limit = w.mu * Normal::load(fn);
-  Tangential t{0.0, 0.0, false};  // smooth: no tangential force, no history
-  switch (w.friction) {
-    case WallFriction::Smooth:
-      break;
-    case WallFriction::Rough:
-      t = tangential_spring(xi_old, vt, dt, law.ks, law.tangential_damping_ratio * gamma_n, limit);
-      break;
-    case WallFriction::Traction:
-      // Eq. 4.1 with the drag taken implicitly over the step, gamma / (1 + gamma dt / m):
-      // stable for any gamma, and at most the force that brings a free disc to the
-      // plate's speed in one step. Traction keeps no spring; the history is left as it was.
-      t = viscous_traction(w.traction_gamma / (1.0 + w.traction_gamma * dt / mass), vt, limit, xi_old);
-      break;
-  }
-  c.touching = true;
-  c.at_limit = t.slip;
-  c.nx = nx; c.ny = ny; c.delta = delta; c.fn = fn; c.ft = t.ft; c.xi = t.xi;
+  with_wall_friction(w.friction, [&](auto kind) {
+    c = wall_contact_lane<Normal, decltype(kind)::value>(wall_frame(w), x, y, vx, vy, omega, r, gamma_n, mass, xi_old,
+                                                         law.kn, law.ks, law.tangential_damping_ratio, dt);
+  });
   return c;
 }
 

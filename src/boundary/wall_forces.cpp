@@ -1,30 +1,57 @@
 #include "boundary/wall_forces.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <utility>
 
 #include "boundary/wall_contact_law.hpp"
 #include "contact/normal_laws.hpp"
+#include "util/select.hpp"
 
 namespace orogen {
 namespace {
 
-// Wall contacts [begin, end): force, history and flags of each, added onto its disc.
-template <class Normal>
-void contact_range(WallContacts& wc, const Discs& d, const std::vector<Wall>& walls, const ContactLaw& law,
-                   double dt, DiscForce* forces, std::size_t begin, std::size_t end) {
-  for (std::size_t k = begin; k < end; ++k) {
-    const auto i = wc.disc[k];
-    const double r = d.radius[i];
-    const WallContactForce c = wall_contact_force<Normal>(walls[wc.wall[k]], d.x[i], d.y[i], d.vx[i], d.vy[i],
-                                                          d.omega[i], r, wc.gamma_n[k], wc.mass[k], wc.xi[k], law, dt);
-    wc.touching[k] = c.touching ? 1 : 0;
-    wc.at_limit[k] = c.at_limit ? 1 : 0;
-    wc.xi[k] = c.xi;
-    if (!c.touching) continue;
-    const double tx = -c.ny, ty = c.nx;
-    forces[i].fx += c.fn * c.nx + c.ft * tx;
-    forces[i].fy += c.fn * c.ny + c.ft * ty;
-    forces[i].torque += -r * c.ft;
+constexpr std::size_t kWallBlock = 64;
+
+// Contacts [begin, end) of one wall: force, history and flags of each, added onto its disc.
+// A block at a time, the law in vector lanes (every contact through it, apart ones masked to
+// zero), then the sums in contact order: the contacts of one wall name each disc once, and
+// adding a zero changes no sum (the sums start at +0.0 and never become -0.0), so the sums
+// are bitwise those of adding the touching contacts alone.
+template <class Normal, WallFriction kFriction>
+void contact_range(WallContacts& wc, const Discs& d, const WallFrame& frame, const ContactLaw& law, double dt,
+                   DiscForce* __restrict forces, std::size_t begin, std::size_t end) {
+  alignas(64) double fx[kWallBlock], fy[kWallBlock], torque[kWallBlock];
+  const double *x = d.x.data(), *y = d.y.data(), *vx = d.vx.data(), *vy = d.vy.data(), *omega = d.omega.data(),
+               *radius = d.radius.data();
+  const double kn = law.kn, ks = law.ks, damping_ratio = law.tangential_damping_ratio;
+  for (std::size_t b0 = begin; b0 < end; b0 += kWallBlock) {
+    const auto count = static_cast<std::ptrdiff_t>(std::min(kWallBlock, end - b0));
+    const std::uint32_t* __restrict disc = wc.disc.data() + b0;
+    const double* __restrict gamma_n = wc.gamma_n.data() + b0;
+    const double* __restrict mass = wc.mass.data() + b0;
+    double* __restrict xi = wc.xi.data() + b0;
+    std::uint8_t* __restrict touching = wc.touching.data() + b0;
+    std::uint8_t* __restrict at_limit = wc.at_limit.data() + b0;
+#pragma omp simd
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const auto i = disc[k];
+      const WallContactForce c = wall_contact_lane<Normal, kFriction>(
+          frame, x[i], y[i], vx[i], vy[i], omega[i], radius[i], gamma_n[k], mass[k], xi[k], kn, ks, damping_ratio, dt);
+      touching[k] = c.touching;
+      at_limit[k] = c.at_limit;
+      xi[k] = c.xi;
+      const double tx = -c.ny, ty = c.nx;
+      fx[k] = select(c.touching, c.fn * c.nx + c.ft * tx, 0.0);
+      fy[k] = select(c.touching, c.fn * c.ny + c.ft * ty, 0.0);
+      torque[k] = select(c.touching, -radius[i] * c.ft, 0.0);
+    }
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+      const auto i = disc[k];
+      forces[i].fx += fx[k];
+      forces[i].fy += fy[k];
+      forces[i].torque += torque[k];
+    }
   }
 }
 
@@ -45,9 +72,14 @@ void wall_forces_share(WallContacts& wc, const Discs& d, const std::vector<Wall>
   // The contacts of thread t's own discs, wall by wall: every disc still adds its wall forces
   // in wall order, whatever the number of threads.
   with_normal_law(law.normal_force, [&](auto normal) {
-    for (std::size_t w = 0; w < walls.size(); ++w)
-      contact_range<decltype(normal)>(wc, d, walls, law, dt, forces, first_at(w, split.disc[t]),
-                                      first_at(w, split.disc[t + 1]));
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      const std::size_t begin = first_at(w, split.disc[t]), end = first_at(w, split.disc[t + 1]);
+      if (begin == end) continue;
+      const WallFrame frame = wall_frame(walls[w]);
+      with_wall_friction(walls[w].friction, [&](auto kind) {
+        contact_range<decltype(normal), decltype(kind)::value>(wc, d, frame, law, dt, forces, begin, end);
+      });
+    }
   });
 }
 
