@@ -27,7 +27,7 @@ struct WallContactForce {
 // contact (the segment's length is a hypot).
 struct WallFrame {
   Segment segment;
-  double wvx, wvy;              // velocity of the wall's surface: the wall's own plus its belt's
+  double wvx, wvy;  // velocity of the wall's surface: the wall's own plus its belt's
   double mu, traction_gamma;
 };
 
@@ -35,8 +35,7 @@ inline WallFrame wall_frame(const Wall& w) {
   const Segment g = segment(w);
   const double len = w.length();
   const double ux = len > 0 ? g.ex / len : 0, uy = len > 0 ? g.ey / len : 0;
-  return {g, w.vx + w.surface_speed * ux, w.vy + w.surface_speed * uy, w.mu,
-          w.traction_gamma};
+  return {g, w.vx + w.surface_speed * ux, w.vy + w.surface_speed * uy, w.mu, w.traction_gamma};
 }
 
 // Disc at (x, y) with velocity (vx, vy), spin omega and radius r; gamma_n, mass and xi_old
