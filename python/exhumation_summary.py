@@ -216,9 +216,9 @@ def eroding_positions(ds, n):
     with at least 5% of the largest cumulative erosion at the last output), at their columns;
     none in a run that has eroded nothing."""
     x = ds.column.values
-    if not np.nanmax(ds.cum_eroded_area.isel(time=-1).values, initial=0.0) > 0:
-        return []
     eroding = x[eroding_columns(ds)]
+    if eroding.size == 0:
+        return []
     return [float(x[np.argmin(np.abs(x - v))]) for v in np.linspace(eroding.min(), eroding.max(), n)]
 
 
@@ -250,10 +250,10 @@ def age_settling(ds, xs):
 def ages_table(run, n, ds=None):
     ds = oa.load(run) if ds is None else ds
     xs = eroding_positions(ds, n)
-    rows = age_settling(ds, xs)
     name = os.path.basename(os.path.normpath(run))
     if not xs:
         return f"{name}: no column has eroded, so no surface ages to settle\n"
+    rows = age_settling(ds, xs)
     closures = [float(h) for h in ds.closure.values]
     head = (f"| {name}: x [h0] | " + " | ".join(f"h = {h:g} h0: S reset, mean age (halves)" for h in closures)
             + " |\n|---|" + "---|" * len(closures) + "\n")

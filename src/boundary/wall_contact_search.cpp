@@ -14,11 +14,12 @@ void search_wall_contacts(WallContacts& wc, const Discs& d, const std::vector<Wa
   // The distance test in parallel, the list in order.
   for (std::size_t w = 0; w < walls.size(); ++w) {
     if (!walls[w].enabled) continue;
+    const Segment wall = segment(walls[w]);
     const auto count = static_cast<std::ptrdiff_t>(n);
 #pragma omp parallel for schedule(static) if (count > min_parallel_items())
     for (std::ptrdiff_t i = 0; i < count; ++i) {
       double cx, cy;
-      const double dist2 = closest_point_on_segment(walls[w], d.x[i], d.y[i], cx, cy);
+      const double dist2 = closest_point(wall, d.x[i], d.y[i], cx, cy);
       const double reach = d.radius[i] + skin;
       near[i] = d.is_dynamic(i) && dist2 < reach * reach;
     }
