@@ -18,21 +18,9 @@ case $workload in
 esac
 work=$(mktemp -d /tmp/orogen_wedge_ab.XXXXXX)
 trap 'rm -rf "$work"' EXIT
-rate() { grep -o 'finished .*(\([0-9.]*\) M particle-steps/s' "$1/run.log" | sed 's/.*(\([0-9.]*\) M.*/\1/'; }
-ra=(); rb=()
-for k in $(seq "$pairs"); do
-  for which in a b; do
-    bin=$a; [ "$which" = b ] && bin=$b
-    rm -rf "$work/$which"
-    OMP_PROC_BIND=true "$bin" run "${args[@]}" --threads "$threads" --set run.adapt_threads=false \
-      --set output.progress=never --set output.vtp=false --out "$work/$which" > "$work/$which.out" 2>&1 ||
-      { echo "$bin failed:" >&2; tail -5 "$work/$which.out" >&2; exit 1; }
-  done
-  r_a=$(rate "$work/a"); r_b=$(rate "$work/b")
-  ra+=("$r_a"); rb+=("$r_b")
-  same=different; cmp -s "$work/a/series.csv" "$work/b/series.csv" && same=same
-  echo "pair $k: A $r_a  B $r_b  M particle-steps/s  (series.csv $same)"
-done
-median() { printf '%s\n' "$@" | sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
-ratios=(); for k in "${!ra[@]}"; do ratios+=("$(awk -v a="${ra[$k]}" -v b="${rb[$k]}" 'BEGIN {printf "%.3f", b / a}')"); done
-echo "workload $workload, $threads thread(s), $pairs pairs: median A $(median "${ra[@]}"), B $(median "${rb[@]}") M particle-steps/s; B/A median $(median "${ratios[@]}") (pairs: ${ratios[*]})"
+run_one() {
+  OMP_PROC_BIND=true "$1" run "${args[@]}" --threads "$threads" --set run.adapt_threads=false \
+    --set output.progress=never --set output.vtp=false --out "$2"
+}
+source bench/ab_pairs.sh
+ab_pairs "$a" "$b" "$pairs" "$work" series.csv "workload $workload, $threads thread(s)"

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "world/world.hpp"
+#include "world_fixtures.hpp"
 
 namespace orogen {
 namespace {
@@ -26,10 +28,12 @@ CollisionResult collide(double e, double v0) {
   w.discs.vx[1] = -v0 / 2;
   w.dt = w.stable_dt() / 100;  // resolve the contact finely (the analytic case)
   double t_start = -1, t_end = -1;
+  std::vector<DiscForce> forces;
+  testing::record_step_forces(w, forces);
   for (int s = 0; s < 200000 && t_end < 0; ++s) {
     w.advance();
     const double gap = w.discs.x[1] - w.discs.x[0] - 1.0;
-    const bool pushing = std::fabs(w.scratch.forces[0].fx) > 0;
+    const bool pushing = std::fabs(forces[0].fx) > 0;
     if (pushing && t_start < 0) t_start = w.time - w.dt;
     if (t_start >= 0 && !pushing && gap < 0.2) t_end = w.time - w.dt;
   }

@@ -86,11 +86,14 @@ TEST(ContactOutput, ForcesAreThoseTheNextStepApplies) {
     const ContactList c = measure_contact_forces(w);
     ASSERT_GT(c.size(), 20u);
     const auto sums = contact_force_sums(w, c);
+    std::vector<DiscForce> forces;
+    testing::record_step_forces(w, forces);
     w.advance();
+    ASSERT_EQ(forces.size(), w.discs.size());
     for (std::size_t i = 0; i < w.discs.size(); ++i) {
-      const double scale = 1e-12 * (1 + std::fabs(w.scratch.forces[i].fx) + std::fabs(w.scratch.forces[i].fy));
-      EXPECT_NEAR(sums[i][0], w.scratch.forces[i].fx, scale) << i << (stale_list ? " (stale list)" : "");
-      EXPECT_NEAR(sums[i][1], w.scratch.forces[i].fy, scale) << i << (stale_list ? " (stale list)" : "");
+      const double scale = 1e-12 * (1 + std::fabs(forces[i].fx) + std::fabs(forces[i].fy));
+      EXPECT_NEAR(sums[i][0], forces[i].fx, scale) << i << (stale_list ? " (stale list)" : "");
+      EXPECT_NEAR(sums[i][1], forces[i].fy, scale) << i << (stale_list ? " (stale list)" : "");
     }
   }
 }

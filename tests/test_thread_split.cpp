@@ -43,13 +43,16 @@ World mixed_heap() {
   return w;
 }
 
-// One step's forces and update with the given split; the disc state after it.
+// One step's forces and update with the given split; the step's force sums and the disc state
+// after it.
 std::vector<double> step_with(World w, const ThreadSplit& split) {
+  std::vector<DiscForce> forces;
+  testing::record_step_forces(w, forces);
   w.step_stages(&split);
   std::vector<double> state;
   for (const auto* a : {&w.discs.x, &w.discs.y, &w.discs.vx, &w.discs.vy, &w.discs.omega, &w.discs.theta})
     state.insert(state.end(), a->begin(), a->end());
-  for (const auto& f : w.scratch.forces) state.insert(state.end(), {f.fx, f.fy, f.torque});
+  for (const auto& f : forces) state.insert(state.end(), {f.fx, f.fy, f.torque});
   state.insert(state.end(), w.contacts.pairs.xi.begin(), w.contacts.pairs.xi.end());
   state.insert(state.end(), w.contacts.walls.xi.begin(), w.contacts.walls.xi.end());
   return state;
@@ -102,6 +105,36 @@ TEST(ThreadSplit, NoSplitChangesTheResult) {
     const std::vector<double> other = step_with(w, others[k]);
     ASSERT_EQ(other.size(), one.size());
     EXPECT_EQ(std::memcmp(other.data(), one.data(), one.size() * sizeof(double)), 0) << "split " << k;
+  }
+}
+
+// Integration zeroes every disc's force sums once used (the next step's force stages add onto
+// them without clearing): members of dynamic and kinematic bodies, free dynamic and kinematic
+// discs, whichever thread integrates them.
+TEST(ThreadSplit, ForceSumsAreZeroAfterEveryStep) {
+  World w = mixed_heap();
+  w.edit_motion([&](MotionEdit& e) {
+    e.cluster(0, Motion::Kinematic, 0.01, 0);
+    for (std::size_t i = 0; i < w.discs.size(); ++i)
+      if (w.discs.cluster[i] < 0) { e.disc(i, Motion::Kinematic, -0.01, 0); break; }
+  });
+  const auto n = static_cast<std::ptrdiff_t>(w.discs.size());
+  const auto nc = static_cast<std::ptrdiff_t>(w.clusters.size());
+  w.advance();  // a list for the new motion
+  const auto chunks = static_cast<std::ptrdiff_t>(w.neighbors.chunk_start.size()) - 1;
+  std::vector<DiscForce> forces;
+  testing::record_step_forces(w, forces);
+  for (const ThreadSplit& split : {split_threads(w.neighbors, w.discs, w.clusters, 1),
+                                   split_threads(w.neighbors, w.discs, w.clusters, 2),
+                                   ThreadSplit{{0, 1, chunks}, {0, n - 5, n}, {0, 1, nc}}}) {
+    w.step_stages(&split);
+    std::size_t pushed = 0;
+    for (const auto& f : forces) pushed += f.fx != 0 || f.fy != 0;
+    EXPECT_GT(pushed, 0u);  // the sums were there during the step (the heap is still falling)
+    for (std::size_t i = 0; i < w.discs.size(); ++i) {
+      const DiscForce& f = w.scratch.forces[i];
+      ASSERT_TRUE(f.fx == 0 && f.fy == 0 && f.torque == 0) << "disc " << i << " of " << n;
+    }
   }
 }
 

@@ -2,6 +2,7 @@
 // Small worlds for the physics tests.
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "world/world.hpp"
 
@@ -13,6 +14,12 @@ inline Wall wall(double ax, double ay, double bx, double by, WallFriction f = Wa
   w.friction = f;
   w.mu = mu;
   return w;
+}
+
+// Keeps in `out` a copy of each step's summed disc forces as integration receives them (it
+// zeroes them after use, so World::scratch holds zeros between steps): an AfterForces hook.
+inline void record_step_forces(World& w, std::vector<DiscForce>& out) {
+  w.hooks.add(Stage::AfterForces, "test.record_forces", [&out](World& world) { out = world.scratch.forces; });
 }
 
 // Elastic energy stored in the disc-disc and disc-wall normal springs.

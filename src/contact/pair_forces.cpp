@@ -141,8 +141,6 @@ void pair_forces_share(const NeighborList& L, PairContacts& contacts, const Disc
   const DiscView d{discs.x.data(), discs.y.data(), discs.vx.data(), discs.vy.data(), discs.omega.data(),
                    discs.radius.data()};
   const PairView pairs{L.first.data(), L.second.data(), contacts.gamma_n.data(), contacts.xi.data()};
-  for (std::ptrdiff_t i = split.disc[t]; i < split.disc[t + 1]; ++i) force[i] = {0.0, 0.0, 0.0};
-#pragma omp barrier
   with_normal_law(law.normal_force, [&](auto normal) {
     chunk_forces<decltype(normal)>(L, pairs, d, law, dt, force, split, t);
   });

@@ -18,17 +18,21 @@ struct DiscForce {
 };
 
 // Per-step scratch of the force stages: the force and torque summed on each disc (by disc
-// index), which integration then uses.
+// index), which integration then uses and zeroes (all zero between steps, so a re-ordered,
+// grown or compacted array needs no clearing), and the threads' cut of the step, made once
+// per neighbour-list build (it depends on the list, the disc and body counts alone).
 struct PairScratch {
   std::vector<DiscForce> forces;
+  ThreadSplit split;
+  std::uint64_t split_build = ~std::uint64_t{0};  // the list build the cut was made for
 };
 
 // Sets the forces to the sum of the discs' contact forces, chunk by chunk (see
 // NeighborList::chunk_start), the chunks and discs cut between the threads of a team by `split`:
 // bitwise the same result for any number of threads and any split. Every thread t of the team
-// (World::step_stages) calls it, `forces` already sized to the discs; it clears thread t's
-// discs, then sums its even chunks, then its odd ones, with the team's barriers between (so the
-// forces are whole when it returns).
+// (World::step_stages) calls it, `forces` already sized to the discs and zero (integration
+// leaves them so); it sums its even chunks, then its odd ones, with the team's barriers
+// between (so the forces are whole when it returns).
 void pair_forces_share(const NeighborList& list, PairContacts& contacts, const Discs& discs, const ContactLaw& law, double dt, DiscForce* forces,
                        const ThreadSplit& split, std::size_t t);
 

@@ -29,8 +29,9 @@ struct Displacement {
 // positions (x_ref, y_ref by disc index, the positions at the last neighbour-list build):
 // measured here, where the positions are written anyway, rather than in a pass of its own; the
 // step's largest displacement is the max over the threads. For a step run in one thread team
-// (World::step_stages); no barrier.
-Displacement integrate_share(Discs& discs, Clusters& clusters, const DiscForce* forces, const BodyForce& body,
+// (World::step_stages); no barrier. Zeroes the force sums of the discs it integrates once used,
+// so that they are zero for the next step's force stages.
+Displacement integrate_share(Discs& discs, Clusters& clusters, DiscForce* forces, const BodyForce& body,
                              double dt, const double* x_ref, const double* y_ref, const ThreadSplit& split,
                              std::size_t t);
 

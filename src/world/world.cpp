@@ -82,27 +82,29 @@ void World::advance() {
 }
 
 void World::step_stages(const ThreadSplit* given) {
-  scratch.forces.resize(discs.size());
+  scratch.forces.resize(discs.size());  // zero between steps (integration leaves them so)
   DiscForce* forces = scratch.forces.data();
   const int threads = given ? given->threads() : step_threads(discs.size());
-  ThreadSplit cut;
+  const ThreadSplit& cut = given ? *given : thread_cut(threads);
   double max2 = 0;
   std::int64_t not_finite = 0;
   // Hooks after the forces run on one thread between the force stages and integration; with
   // none, the team does not wait there for it.
   const bool after_forces = !hooks.empty(Stage::AfterForces);
   std::exception_ptr hook_error;
+  ThreadSplit fallback;
   // One thread team for all three stages (a team per stage cost a fork and a join each), each
   // thread on its own stretch of the domain.
 #pragma omp parallel num_threads(threads) reduction(max : max2) reduction(+ : not_finite) if (threads > 1)
   {
     // OMP_DYNAMIC may give fewer threads than asked for: then cut for the team actually given.
-    const bool use_given = given && given->threads() == omp_get_num_threads();
-    if (!use_given) {
+    const ThreadSplit* split_ptr = &cut;
+    if (split_ptr->threads() != omp_get_num_threads()) {
 #pragma omp single
-      cut = split_threads(neighbors, discs, clusters, omp_get_num_threads());
+      fallback = split_threads(neighbors, discs, clusters, omp_get_num_threads());
+      split_ptr = &fallback;
     }
-    const ThreadSplit& split = use_given ? *given : cut;
+    const ThreadSplit& split = *split_ptr;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     pair_forces_share(neighbors, contacts.pairs, discs, law, dt, forces, split, t);
     wall_forces_share(contacts.walls, discs, walls, law, dt, forces, split, t);
@@ -126,6 +128,21 @@ void World::step_stages(const ThreadSplit* given) {
   }
   if (hook_error) std::rethrow_exception(hook_error);
   moved = Displacement{max2, not_finite}.distance();
+}
+
+const ThreadSplit& World::thread_cut(int threads) {
+  // The cut depends on the list and on the disc and body counts alone: made again only when
+  // one of them changed, not every step (it cost a `single`, a barrier and three allocations).
+  ThreadSplit& s = scratch.split;
+  const auto chunks = static_cast<std::ptrdiff_t>(neighbors.chunk_start.empty() ? 0 : neighbors.chunk_start.size() - 1);
+  const bool current = scratch.split_build == neighbors.builds && s.threads() == threads && s.chunk.back() == chunks &&
+                       s.disc.back() == static_cast<std::ptrdiff_t>(discs.size()) &&
+                       s.body.back() == static_cast<std::ptrdiff_t>(clusters.size());
+  if (!current) {
+    s = split_threads(neighbors, discs, clusters, threads);
+    scratch.split_build = neighbors.builds;
+  }
+  return s;
 }
 
 bool World::contacts_stale() const { return orogen::contacts_stale(neighbors, discs, walls, moved); }

@@ -75,6 +75,9 @@ struct World {
   // threads step_threads gives, cut by split_threads; sets `moved`. The neighbour list must be
   // valid. Tests give lopsided splits: results never depend on the split.
   void step_stages(const ThreadSplit* split = nullptr);
+  // The cut of the step between `threads` threads (split_threads), kept in the scratch until
+  // the list is rebuilt or the discs or bodies change in number.
+  const ThreadSplit& thread_cut(int threads);
 
   // Removes the flagged discs (flags are by disc index; a flagged cluster disc removes its
   // whole cluster), logging each removal; history of the surviving contacts is kept.
