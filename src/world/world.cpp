@@ -98,13 +98,12 @@ void World::step_stages(const ThreadSplit* given) {
 #pragma omp parallel num_threads(threads) reduction(max : max2) reduction(+ : not_finite) if (threads > 1)
   {
     // OMP_DYNAMIC may give fewer threads than asked for: then cut for the team actually given.
-    const ThreadSplit* split_ptr = &cut;
-    if (split_ptr->threads() != omp_get_num_threads()) {
+    const bool whole_team = cut.threads() == omp_get_num_threads();
+    if (!whole_team) {
 #pragma omp single
       fallback = split_threads(neighbors, discs, clusters, omp_get_num_threads());
-      split_ptr = &fallback;
     }
-    const ThreadSplit& split = *split_ptr;
+    const ThreadSplit& split = whole_team ? cut : fallback;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     pair_forces_share(neighbors, contacts.pairs, discs, law, dt, forces, split, t);
     wall_forces_share(contacts.walls, discs, walls, law, dt, forces, split, t);

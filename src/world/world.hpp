@@ -72,7 +72,7 @@ struct World {
 
   // Stages 2-4 of a step (pair forces, wall forces, integration) in one thread team, each
   // thread on its share of `split` (one thread per share), or with none (advance) on the
-  // threads step_threads gives, cut by split_threads; sets `moved`. The neighbour list must be
+  // threads step_threads gives, cut by thread_cut; sets `moved`. The neighbour list must be
   // valid. Tests give lopsided splits: results never depend on the split.
   void step_stages(const ThreadSplit* split = nullptr);
   // The cut of the step between `threads` threads (split_threads), kept in the scratch until
