@@ -65,7 +65,7 @@ std::size_t world_bytes(World& w) {
        bytes_of(P.id_second) + bytes_of(L.chunk_start) + bytes_of(L.x_ref) + bytes_of(L.y_ref);
   const auto& wc = w.contacts.walls;
   b += bytes_of(wc.wall) + bytes_of(wc.disc) + bytes_of(wc.disc_id) + bytes_of(wc.xi) + bytes_of(wc.gamma_n) +
-       bytes_of(wc.touching) + bytes_of(wc.at_limit) + bytes_of(wc.mass);
+       bytes_of(wc.touching) + bytes_of(wc.at_limit) + bytes_of(wc.traction_mass);
   const auto& s = w.scratch;
   b += bytes_of(s.forces);
   return b;

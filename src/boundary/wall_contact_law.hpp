@@ -38,15 +38,15 @@ inline WallFrame wall_frame(const Wall& w) {
   return {g, w.vx + w.surface_speed * ux, w.vy + w.surface_speed * uy, w.mu, w.traction_gamma};
 }
 
-// Disc at (x, y) with velocity (vx, vy), spin omega and radius r; gamma_n, mass and xi_old
+// Disc at (x, y) with velocity (vx, vy), spin omega and radius r; gamma_n, traction_mass and xi_old
 // are the contact's own (WallContacts, contact/contact_store.hpp). Normal is a registered
 // normal law (contact/normal_laws.hpp); kFriction the wall's friction kind, each built from
 // the kernels of contact/law_kernels.hpp that the pair kernel uses too. A disc apart from the
 // wall (or exactly on it, with no normal) gets zeros; its values are computed and masked.
 template <class Normal, WallFriction kFriction>
 inline WallContactForce wall_contact_lane(const WallFrame& f, double x, double y, double vx, double vy, double omega,
-                                          double r, double gamma_n, double mass, double xi_old, double kn, double ks,
-                                          double damping_ratio, double dt) {
+                                          double r, double gamma_n, double traction_mass, double xi_old, double kn,
+                                          double ks, double damping_ratio, double dt) {
   double cx, cy;
   const double dist2 = closest_point(f.segment, x, y, cx, cy);
   const bool touching = !(dist2 >= r * r) & (dist2 != 0.0);
@@ -65,10 +65,11 @@ inline WallContactForce wall_contact_lane(const WallFrame& f, double x, double y
   if constexpr (kFriction == WallFriction::Rough) {
     t = tangential_spring(xi_old, vt, dt, ks, damping_ratio * gamma_n, limit);
   } else if constexpr (kFriction == WallFriction::Traction) {
-    // Eq. 4.1 with the drag taken implicitly over the step, gamma / (1 + gamma dt / m):
-    // stable for any gamma, and at most the force that brings a free disc to the
-    // plate's speed in one step. Traction keeps no spring; the history is left as it was.
-    t = viscous_traction(f.traction_gamma / (1.0 + f.traction_gamma * dt / mass), vt, limit, xi_old);
+    // Eq. 4.1 with the drag taken implicitly over the step, gamma / (1 + gamma dt / m), m the
+    // body's effective mass at the contact point (boundary/traction_mass.hpp): stable for any
+    // gamma, and at most the force that brings the contact point to the plate's speed in one
+    // step. Traction keeps no spring; the history is left as it was.
+    t = viscous_traction(f.traction_gamma / (1.0 + f.traction_gamma * dt / traction_mass), vt, limit, xi_old);
   }
   WallContactForce c;
   c.touching = touching;
@@ -95,12 +96,13 @@ void with_wall_friction(WallFriction kind, F&& f) {
 // The same law for one contact, for callers outside the force loop (the contact output).
 template <class Normal>
 inline WallContactForce wall_contact_force(const Wall& w, double x, double y, double vx, double vy, double omega,
-                                           double r, double gamma_n, double mass, double xi_old,
+                                           double r, double gamma_n, double traction_mass, double xi_old,
                                            const ContactLaw& law, double dt) {
   WallContactForce c;
   with_wall_friction(w.friction, [&](auto kind) {
-    c = wall_contact_lane<Normal, decltype(kind)::value>(wall_frame(w), x, y, vx, vy, omega, r, gamma_n, mass, xi_old,
-                                                         law.kn, law.ks, law.tangential_damping_ratio, dt);
+    c = wall_contact_lane<Normal, decltype(kind)::value>(wall_frame(w), x, y, vx, vy, omega, r, gamma_n,
+                                                         traction_mass, xi_old, law.kn, law.ks,
+                                                         law.tangential_damping_ratio, dt);
   });
   return c;
 }

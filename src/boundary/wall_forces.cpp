@@ -29,7 +29,7 @@ void contact_range(WallContacts& wc, const Discs& d, const WallFrame& frame, con
     const auto count = static_cast<std::ptrdiff_t>(std::min(kWallBlock, end - b0));
     const std::uint32_t* __restrict disc = wc.disc.data() + b0;
     const double* __restrict gamma_n = wc.gamma_n.data() + b0;
-    const double* __restrict mass = wc.mass.data() + b0;
+    const double* __restrict traction_mass = wc.traction_mass.data() + b0;
     double* __restrict xi = wc.xi.data() + b0;
     std::uint8_t* __restrict touching = wc.touching.data() + b0;
     std::uint8_t* __restrict at_limit = wc.at_limit.data() + b0;
@@ -37,7 +37,8 @@ void contact_range(WallContacts& wc, const Discs& d, const WallFrame& frame, con
     for (std::ptrdiff_t k = 0; k < count; ++k) {
       const auto i = disc[k];
       const WallContactForce c = wall_contact_lane<Normal, kFriction>(
-          frame, x[i], y[i], vx[i], vy[i], omega[i], radius[i], gamma_n[k], mass[k], xi[k], kn, ks, damping_ratio, dt);
+          frame, x[i], y[i], vx[i], vy[i], omega[i], radius[i], gamma_n[k], traction_mass[k], xi[k], kn, ks,
+          damping_ratio, dt);
       touching[k] = c.touching;
       at_limit[k] = c.at_limit;
       xi[k] = c.xi;

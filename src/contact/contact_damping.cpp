@@ -48,12 +48,7 @@ void set_pair_damping(PairContacts& pairs, const NeighborList& L, const Discs& d
 
 void set_wall_damping(WallContacts& wc, const Discs& d, const Clusters& c, const ContactLaw& law, double dt) {
   wc.gamma_n.resize(wc.size());
-  wc.mass.resize(wc.size());
-  for (std::size_t k = 0; k < wc.size(); ++k) {
-    const double m = resisting_mass(d, c, wc.disc[k]);
-    wc.gamma_n[k] = law.gamma_n(m, dt);
-    wc.mass[k] = m;
-  }
+  for (std::size_t k = 0; k < wc.size(); ++k) wc.gamma_n[k] = law.gamma_n(resisting_mass(d, c, wc.disc[k]), dt);
 }
 
 }  // namespace orogen

@@ -22,7 +22,7 @@ void prepare_damping(const ContactLaw& law, const Discs& discs, const Clusters& 
 void set_pair_damping(PairContacts& pairs, const NeighborList& list, const Discs& discs, const Clusters& clusters,
                       const ContactLaw& law, double dt);
 
-// gamma_n and the resisting mass of every wall contact.
+// gamma_n of every wall contact, from the mass of the disc's body.
 void set_wall_damping(WallContacts& walls, const Discs& discs, const Clusters& clusters, const ContactLaw& law,
                       double dt);
 

@@ -27,11 +27,11 @@ struct WallContacts {
   std::vector<std::int64_t> disc_id;   // stable id of the disc: the history's key with the wall
   std::vector<double> xi;
   std::vector<double> gamma_n;         // normal dashpot coefficient of the contact
-  std::vector<double> mass;            // mass of the body the disc belongs to
+  std::vector<double> traction_mass;   // what a traction wall's drag steps against (boundary/traction_mass.hpp)
   std::vector<std::uint8_t> touching;  // whether the disc touched the wall in the last force pass
   std::vector<std::uint8_t> at_limit;  // whether the tangential force sat on the Coulomb limit
   void clear() {
-    wall.clear(); disc.clear(); disc_id.clear(); xi.clear(); gamma_n.clear(); mass.clear();
+    wall.clear(); disc.clear(); disc_id.clear(); xi.clear(); gamma_n.clear(); traction_mass.clear();
     touching.clear(); at_limit.clear();
   }
   std::size_t size() const { return disc.size(); }
@@ -55,7 +55,7 @@ struct PairContactView {
 // One disc-wall contact of the last force pass.
 struct WallContactView {
   std::uint32_t wall, disc;
-  double xi, gamma_n, mass;
+  double xi, gamma_n, traction_mass;
   bool touching, at_limit;
 };
 
@@ -79,7 +79,7 @@ template <class F>
 void for_each_wall_contact(const ContactStore& store, F&& f) {
   const auto& wc = store.walls;
   for (std::size_t k = 0; k < wc.size(); ++k)
-    f(WallContactView{wc.wall[k], wc.disc[k], wc.xi[k], wc.gamma_n[k], wc.mass[k], wc.touching[k] != 0,
+    f(WallContactView{wc.wall[k], wc.disc[k], wc.xi[k], wc.gamma_n[k], wc.traction_mass[k], wc.touching[k] != 0,
                       wc.at_limit[k] != 0});
 }
 

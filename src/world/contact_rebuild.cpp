@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "boundary/traction_mass.hpp"
 #include "boundary/wall_contact_search.hpp"
 #include "contact/cell_grid.hpp"
 #include "contact/chunk_hints.hpp"
@@ -37,6 +38,7 @@ BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clus
   search_wall_contacts(store.walls, d, walls, L.skin);
   carry_wall_history(store.walls, wall_history);
   set_wall_damping(store.walls, d, c, law, dt);
+  set_traction_mass(store.walls, d, c, walls);
 
   record_reference_positions(L, d, walls);
   ++L.builds;

@@ -9,13 +9,15 @@ std::string key(std::string_view prefix, std::string_view name) { return std::st
 
 // Calls f(name, vector&) for every array of the candidate list and the contact store, under
 // the keys and in the order of the checkpoint format (written when the store was part of the
-// list, "nl." + name): one list for save and load, so neither misses an array.
+// list, "nl." + name): one list for save and load, so neither misses an array. "walls.mass"
+// holds the traction mass (boundary/traction_mass.hpp) since 2026-11-26, the body's mass before;
+// a resumed older checkpoint uses its stored masses until the next list build.
 template <class F>
 void for_each_contact_array(NeighborList& L, ContactStore& s, F&& f) {
   f("first", L.first); f("second", L.second); f("xi", s.pairs.xi); f("gamma_n", s.pairs.gamma_n);
   f("id_first", s.pairs.id_first); f("id_second", s.pairs.id_second); f("chunk_start", L.chunk_start);
   f("walls.wall", s.walls.wall); f("walls.disc", s.walls.disc); f("walls.xi", s.walls.xi);
-  f("walls.gamma_n", s.walls.gamma_n); f("walls.mass", s.walls.mass); f("walls.touching", s.walls.touching);
+  f("walls.gamma_n", s.walls.gamma_n); f("walls.mass", s.walls.traction_mass); f("walls.touching", s.walls.touching);
   f("walls.at_limit", s.walls.at_limit); f("wall_disc_id", s.walls.disc_id);
   f("x_ref", L.x_ref); f("y_ref", L.y_ref);
   f("wall_ax_ref", L.wall_ax_ref); f("wall_ay_ref", L.wall_ay_ref);

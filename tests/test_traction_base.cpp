@@ -1,0 +1,87 @@
+// The traction base (thesis eq. 4.1, wall_contact_law.hpp): its implicit drag steps against
+// the body's effective mass at the contact point (boundary/traction_mass.hpp), so a body
+// carried by the plate comes to the no-slip state and stays there, with no force chattering
+// at the Coulomb limit, for any drag coefficient and friction.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "world_fixtures.hpp"
+
+namespace orogen {
+namespace {
+
+constexpr double kPlateSpeed = 0.025;
+
+World plate_world(double gamma, double mu) {
+  World w;
+  w.law.kn = 1e4;
+  w.law.ks = 5e3;
+  w.law.mu = 0.3;
+  Wall plate = testing::wall(-100, 0, 100, 0, WallFriction::Traction, mu);
+  plate.traction_gamma = gamma;
+  plate.surface_speed = kPlateSpeed;
+  w.walls = {plate};
+  w.neighbors.skin = 0.3;
+  return w;
+}
+
+struct Motion2 {
+  double vx, omega;
+};
+
+// Steps the world and returns the last two steps' velocity of disc 0 (free) or of body 0.
+std::array<Motion2, 2> last_two(World& w, int steps, bool body) {
+  std::array<Motion2, 2> m{};
+  for (int s = 0; s < steps; ++s) {
+    w.advance();
+    m[0] = m[1];
+    m[1] = body ? Motion2{w.clusters.vx[0], w.clusters.omega[0]} : Motion2{w.discs.vx[0], w.discs.omega[0]};
+  }
+  return m;
+}
+
+// A free disc on the moving plate rolls: the drag's impulse J gives it v = J / m and spin
+// omega r = J r^2 / I = 2 J / m, and the contact point moves with the plate when
+// v + omega r = V: v = V / 3, omega r = 2 V / 3. Before, the drag stepped against the disc's
+// mass alone (a third of the contact point's effective one) and flipped sign every step at
+// the Coulomb limit: v alternated between 0.0082 and 0.0086.
+TEST(TractionBase, AFreeDiscRollsWithThePlateAtAThirdOfItsSpeed) {
+  for (double gamma : {10.0, 1e4, 1e8}) {
+    World w = plate_world(gamma, 0.2);
+    w.add_disc(0, 0.5, 0.5);
+    w.dt = 0.5 * w.stable_dt();
+    const auto m = last_two(w, 20000, false);
+    for (const auto& s : m) {
+      EXPECT_NEAR(s.vx, kPlateSpeed / 3, 1e-6 * kPlateSpeed) << "gamma " << gamma;
+      EXPECT_NEAR(s.omega * 0.5, 2 * kPlateSpeed / 3, 1e-6 * kPlateSpeed) << "gamma " << gamma;
+    }
+    EXPECT_EQ(w.wall_contact_stats(0).touching, 1u);
+    EXPECT_EQ(w.wall_contact_stats(0).at_limit, 0u) << "the drag sits on the Coulomb limit, gamma " << gamma;
+  }
+}
+
+// A three-disc body resting on two of its discs is carried at the plate's speed without
+// turning, whatever the friction: both contacts' drags together stay below deadbeat. Before,
+// each contact stepped against the whole body's mass, the two overshot together, and the body
+// chattered (vx 0.0248-0.0253, spin +-4e-4); with mu_bp = 20 the wedge broke up in 34 steps.
+TEST(TractionBase, ABodyOnTwoOfItsDiscsMovesWithThePlate) {
+  for (double mu : {0.2, 20.0}) {
+    World w = plate_world(1e4, mu);
+    const std::size_t a = w.add_disc(-0.4, 0.4, 0.4), b = w.add_disc(0.4, 0.4, 0.4), c = w.add_disc(0, 1.0, 0.4);
+    const std::array<std::size_t, 3> members{a, b, c};
+    w.add_cluster(members);
+    w.dt = 0.5 * w.stable_dt();
+    const auto m = last_two(w, 20000, true);
+    for (const auto& s : m) {
+      EXPECT_NEAR(s.vx, kPlateSpeed, 1e-9) << "mu " << mu;
+      EXPECT_NEAR(s.omega, 0.0, 1e-9) << "mu " << mu;
+    }
+    EXPECT_EQ(w.wall_contact_stats(0).touching, 2u);
+    EXPECT_EQ(w.wall_contact_stats(0).at_limit, 0u) << "mu " << mu;
+  }
+}
+
+}  // namespace
+}  // namespace orogen
