@@ -27,17 +27,17 @@ World plate_world(double gamma, double mu) {
   return w;
 }
 
-struct Motion2 {
+struct Velocity {
   double vx, omega;
 };
 
 // Steps the world and returns the last two steps' velocity of disc 0 (free) or of body 0.
-std::array<Motion2, 2> last_two(World& w, int steps, bool body) {
-  std::array<Motion2, 2> m{};
+std::array<Velocity, 2> last_two(World& w, int steps, bool body) {
+  std::array<Velocity, 2> m{};
   for (int s = 0; s < steps; ++s) {
     w.advance();
     m[0] = m[1];
-    m[1] = body ? Motion2{w.clusters.vx[0], w.clusters.omega[0]} : Motion2{w.discs.vx[0], w.discs.omega[0]};
+    m[1] = body ? Velocity{w.clusters.vx[0], w.clusters.omega[0]} : Velocity{w.discs.vx[0], w.discs.omega[0]};
   }
   return m;
 }
