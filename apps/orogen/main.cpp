@@ -14,6 +14,7 @@
 #include "exhumation/analyze_command.hpp"
 #include "run/runner.hpp"
 #include "sweep/sweep_command.hpp"
+#include "util/omp_environment.hpp"
 #include "util/parallel.hpp"
 
 int main(int argc, char** argv) {
@@ -25,6 +26,14 @@ int main(int argc, char** argv) {
   const CLI::Validator not_empty(
       [](std::string& value) { return value.empty() ? std::string("an empty value (a number is needed)") : ""; },
       "", "not empty");
+  // A count must be written as one: CLI11's range check would call "1.5", "1e3" or "abc" "not
+  // in range", which hides what is wrong.
+  const CLI::Validator whole_number(
+      [](std::string& value) {
+        const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
+        return digits ? std::string() : "'" + value + "' is not a whole number (digits only)";
+      },
+      "", "whole number");
 
   orogen::RunOptions run;
   std::string config_path, out = "out";
@@ -34,6 +43,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", run.overrides, "override a key: --set contact.mu=0.2 (repeatable)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: run.threads, 0 = all cores)")
       ->check(not_empty)
+      ->check(whole_number)
       ->check(CLI::Range(0, orogen::kMaxThreads));
   std::string resume_dir;
   auto* resume_opt = run_cmd->add_option("--resume", resume_dir, "continue the killed run in this folder");
@@ -79,10 +89,12 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--out,-o", sweep_out, "sweep folder: runs/, logs/, results.csv, results.md")->required();
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "runs at once (default: hardware threads / --threads)")
       ->check(not_empty)
+      ->check(whole_number)
       ->check(CLI::Range(1, 4096));
   sweep_cmd->add_option("--threads", sweep.threads, "threads of each run (more only helps from 16384 discs up)")
       ->capture_default_str()
       ->check(not_empty)
+      ->check(whole_number)
       ->check(CLI::Range(1, orogen::kMaxThreads));
   sweep_cmd->add_flag("--render", sweep.render, "render each finished run (horizons and max_rel_disp)");
   sweep_cmd->add_flag("--dry-run", sweep.dry_run, "check the sweep, list its runs and what each needs; run nothing");
@@ -96,10 +108,12 @@ int main(int argc, char** argv) {
       ->required();
   ensemble_cmd->add_option("--jobs,-j", ensemble.jobs, "members at once (default: the cores, or the members if fewer)")
       ->check(not_empty)
+      ->check(whole_number)
       ->check(CLI::Range(1, 4096));
   ensemble_cmd->add_option("--threads", ensemble.threads,
                            "threads of each member (default: the cores left over when members are fewer)")
       ->check(not_empty)
+      ->check(whole_number)
       ->check(CLI::Range(1, orogen::kMaxThreads));
   ensemble_cmd->add_flag("--dry-run", ensemble.dry_run, "check the ensemble, list its members; run nothing");
   ensemble_cmd->add_flag("--no-stats", ensemble.no_stats, "run the members only (python/ensemble_stats.py DIR later)");
@@ -111,6 +125,7 @@ int main(int argc, char** argv) {
   export_cmd->add_option("dir", export_dir, "run folder")->required();
   export_cmd->add_option("--output", export_opt.output, "output index (default: the last)")
       ->check(not_empty)
+      ->check(whole_number)
       ->check(CLI::Range(std::int64_t{0}, std::numeric_limits<std::int64_t>::max()));
   export_cmd->add_option("--format", export_opt.format, "lammps-data | lammps-dump | xyz | csv")->required();
   export_cmd->add_option("--to", export_to, "the file to write")->required();
@@ -173,10 +188,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
-  if (const std::string error = orogen::parallel_environment_error(); !error.empty()) {
-    std::cerr << "error: " << error << "\n";
-    return 2;
-  }
+  for (const std::string& error : {orogen::parallel_environment_error(), orogen::omp_environment_error(orogen::kMaxThreads)})
+    if (!error.empty()) {
+      std::cerr << "error: " << error << "\n";
+      return 2;
+    }
   if (*config_cmd) {
     std::cout << (markdown ? orogen::reference_markdown() : orogen::Config::load(std::nullopt, {}).to_toml());
     return 0;

@@ -23,6 +23,10 @@ struct WorldHandle {
   World& get() const;
 };
 
+// The command line's check of the environment variables that steer the engine (OMP_*,
+// OROGEN_MIN_PARALLEL_ITEMS), raised as ConfigError before a run or a simulation starts.
+void check_environment();
+
 void bind_config(pyb::module_& m);
 void bind_world(pyb::module_& m);
 void bind_simulation(pyb::module_& m);

@@ -2,8 +2,16 @@
 #include "bindings.hpp"
 
 #include "config/config.hpp"
+#include "config/schema.hpp"
+#include "util/omp_environment.hpp"
+#include "util/parallel.hpp"
 
 namespace orogen::py {
+
+void check_environment() {
+  for (const std::string& error : {parallel_environment_error(), omp_environment_error(kMaxThreads)})
+    if (!error.empty()) throw ConfigError(error);
+}
 
 PYBIND11_MODULE(_orogen, m) {
   m.doc() = "Orogen's engine (C++); use it through the `orogen` package";

@@ -81,6 +81,7 @@ void bind_run(pyb::module_& m) {
       "run",
       [](std::optional<std::filesystem::path> config, std::vector<std::string> overrides, std::filesystem::path out,
          int threads, bool resume, std::string from, pyb::object hook, std::uint64_t every, pyb::object setup) {
+        check_environment();
         RunResult r = run(std::move(config), std::move(overrides), std::move(out), threads, resume, std::move(from),
                           std::move(hook), every, std::move(setup));
         if (r.error) throw std::move(*r.error);

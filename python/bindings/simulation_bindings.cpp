@@ -17,7 +17,8 @@ namespace {
 
 class Simulation {
  public:
-  explicit Simulation(Config config) : config_(std::move(config)), exp_(make_experiment(config_)) {
+  explicit Simulation(Config config)
+      : config_((check_environment(), std::move(config))), exp_(make_experiment(config_)) {
     apply_engine_config(config_, world_);
     exp_->setup(world_);
   }

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "io/snapshot_reader.hpp"
+#include "run/run_folder.hpp"
 #include "render/animation.hpp"
 #include "render/frame_renderer.hpp"
 
@@ -117,6 +118,8 @@ void check_options(const RenderCommandOptions& o) {
     throw RenderError(2, fmt::format("--frames-dir '{}': must be a plain folder name (letters, digits, '_', '-', "
                                      "'.'; not '.' or '..'), made inside the run folder",
                                      o.frames_name));
+  if (const std::string refusal = run_file_refusal("--frames-dir", o.dir / o.frames_name); !refusal.empty())
+    throw RenderError(2, refusal);
 }
 
 // The coloring from --color.
@@ -157,7 +160,8 @@ fs::path snapshot_file(const fs::path& dir) {
   return h5;
 }
 
-// Runs a read of the snapshot file; whatever the file does wrong becomes a refusal naming it.
+// Runs a read of the snapshot file; whatever the file does wrong becomes an error naming it
+// (exit 1: a file that cannot be read, as for every command).
 template <class F>
 auto reading(const fs::path& h5, F&& f) {
   try {
@@ -167,7 +171,7 @@ auto reading(const fs::path& h5, F&& f) {
   } catch (const RenderError&) {
     throw;
   } catch (const std::exception& e) {
-    throw RenderError(2, fmt::format("{} is not a readable orogen snapshot file: {}", h5.string(), e.what()));
+    throw RenderError(1, fmt::format("{} is not a readable orogen snapshot file: {}", h5.string(), e.what()));
   }
 }
 

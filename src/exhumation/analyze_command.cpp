@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -12,8 +13,10 @@
 #include <stdexcept>
 
 #include "config/config.hpp"
+#include "config/run_identity.hpp"
 #include "exhumation/analysis_state.hpp"
 #include "exhumation/analysis_writer.hpp"
+#include "io/file_lock.hpp"
 #include "io/snapshot_reader.hpp"
 
 namespace orogen {
@@ -120,6 +123,16 @@ AnalysisState start(const AnalysisSettings& settings, const Config& config, doub
   return s;
 }
 
+// The temporary files (NAME.tmp-PID) a killed call left of analyze's own files.
+void remove_own_temporary_files(const fs::path& dir) {
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with("analysis") && name.find(".tmp-") != std::string::npos) stale.push_back(entry.path());
+  }
+  for (const auto& p : stale) fs::remove(p);
+}
+
 bool same_settings(const AnalysisSettings& a, const AnalysisSettings& b) {
   return a.closure == b.closure && a.flux_window == b.flux_window && a.steady_fraction == b.steady_fraction &&
          a.particle_stride == b.particle_stride && a.trajectory_output == b.trajectory_output;
@@ -133,6 +146,15 @@ int analyze(const AnalyzeOptions& options) {
   if (!fs::is_regular_file(index) || !fs::is_regular_file(config_path))
     throw AnalyzeError(2, fmt::format("{} is not a run folder (no {}); analyze takes the folder of a wedge run",
                                       dir.string(), fs::is_regular_file(index) ? "config.toml" : "snapshots.h5"));
+  // One analysis at a time writes a folder (a running run may write its outputs meanwhile:
+  // analyze reads only the complete ones); then the temporary files of a killed call go.
+  FileLock lock(dir / "analysis.lock");
+  if (lock.open_error() != 0)
+    throw AnalyzeError(1, fmt::format("cannot write in {}: {}", dir.string(), std::strerror(lock.open_error())));
+  if (!lock.locked())
+    throw AnalyzeError(2, fmt::format("{} is being analysed by another orogen process (it holds {}); wait for it to end",
+                                      dir.string(), lock.path().string()));
+  remove_own_temporary_files(dir);
   std::optional<Config> config;
   try {
     config = Config::load(config_path, {});
@@ -163,7 +185,7 @@ int analyze(const AnalyzeOptions& options) {
   try {
     reader.emplace(index);
   } catch (const std::exception& e) {
-    throw AnalyzeError(2, fmt::format("{} is not a readable orogen snapshot file: {}", index.string(), e.what()));
+    throw AnalyzeError(1, fmt::format("{} is not a readable orogen snapshot file: {}", index.string(), e.what()));
   }
   const auto& meta = reader->metadata();
   const auto h0_it = meta.numbers.find("h0");
@@ -177,15 +199,24 @@ int analyze(const AnalyzeOptions& options) {
                                         list(o.settings.closure), h));
   const auto id_it = meta.strings.find("run_identity");
   const std::string identity = id_it == meta.strings.end() ? "" : id_it->second;
+  if (!identity.empty() && identity != run_identity(*config))  // early runs stored none
+    throw AnalyzeError(2, fmt::format("{} and {} are not of one run (identities {} and {})", index.string(),
+                                      config_path.string(), identity.empty() ? "none" : identity, run_identity(*config)));
   const std::int64_t count = reader->count();
   if (count == 0) throw AnalyzeError(2, fmt::format("{} lists no complete output yet", index.string()));
 
+  // Output k, refused if it was copied in from another run.
+  const std::string config_toml = config->to_toml();
   const auto read = [&](std::int64_t k) {
+    const fs::path file = dir / "snapshots" / (snapshot_group_name(k) + ".h5");
+    std::string foreign;
     try {
-      return reader->read(k);
+      foreign = foreign_output(*reader, k, identity, config_toml, file);
+      if (foreign.empty()) return reader->read(k);
     } catch (const std::exception& e) {
-      throw AnalyzeError(2, fmt::format("{}: output {} cannot be read (corrupt or truncated): {}", index.string(), k, e.what()));
+      throw AnalyzeError(1, fmt::format("{}: output {} cannot be read (corrupt or truncated): {}", index.string(), k, e.what()));
     }
+    throw AnalyzeError(2, foreign);
   };
   const fs::path state_path = dir / "analysis_state.bin";
   std::optional<AnalysisState> state;
@@ -285,12 +316,11 @@ AnalysisSettings analysis_settings(const Config& config) {
 }
 
 void check_in_run_analysis(const Config& config) {
-  if (!config.get_bool("analysis.in_run")) return;
-  if (config.get_string("run.experiment") != "wedge")
+  analysis_settings(config);  // a later `orogen analyze` reads them: refused now, not then
+  if (config.get_bool("analysis.in_run") && config.get_string("run.experiment") != "wedge")
     throw ConfigError(fmt::format("analysis.in_run = true needs run.experiment = \"wedge\" (it is \"{}\"): the "
                                   "exhumation analysis is of wedge runs",
                                   config.get_string("run.experiment")));
-  analysis_settings(config);
 }
 
 std::string analysis_settings_error(const AnalysisSettings& s, bool from_config) {

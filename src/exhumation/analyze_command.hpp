@@ -30,8 +30,8 @@ class Config;
 // analysis.closure_depths if it is not a list of numbers or the settings are bad.
 AnalysisSettings analysis_settings(const Config& config);
 
-// With analysis.in_run: throws ConfigError unless the run is a wedge and the [analysis]
-// keys are good.
+// Throws ConfigError unless the [analysis] keys are good (checked for every run, since a later
+// `orogen analyze` reads them) and, with analysis.in_run, the run is a wedge.
 void check_in_run_analysis(const Config& config);
 
 // The settings' problems, one message naming the option (`--closure-depths` or, with

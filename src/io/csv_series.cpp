@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "io/atomic_file.hpp"
+#include "io/binary_archive.hpp"
 
 namespace orogen {
 namespace {
@@ -21,6 +22,16 @@ std::vector<std::string_view> split(std::string_view line, char sep) {
     if (end == std::string_view::npos) return out;
     begin = end + 1;
   }
+}
+
+// One row as the file holds it: the shortest form of each value that reads back to the same
+// double (so a loaded series formats as it was written, NaN included).
+void append_row_text(std::string& out, const std::vector<double>& row) {
+  for (std::size_t j = 0; j < row.size(); ++j) {
+    if (j) out += ',';
+    out += fmt::format("{}", row[j]);
+  }
+  out += '\n';
 }
 
 [[noreturn]] void bad_file(const std::filesystem::path& path, std::size_t line, const std::string& why) {
@@ -63,14 +74,17 @@ void CsvSeries::save() const {
   for (const auto& c : columns_) out += "# " + c.name + ": " + c.description + "\n";
   for (std::size_t j = 0; j < columns_.size(); ++j) out += (j ? "," : "") + columns_[j].name;
   out += '\n';
-  for (const auto& row : rows_) {
-    for (std::size_t j = 0; j < row.size(); ++j) {
-      if (j) out += ',';
-      out += fmt::format("{}", row[j]);  // shortest form that reads back to the same double
-    }
-    out += '\n';
-  }
+  for (const auto& row : rows_) append_row_text(out, row);
   write_file_atomically(path_, out);
+}
+
+std::uint64_t CsvSeries::digest(std::size_t k) const {
+  if (k > rows_.size())
+    throw std::invalid_argument(fmt::format("no digest of {} rows of '{}': it has {}", k, path_.string(), rows_.size()));
+  std::string text;
+  for (const auto& c : columns_) text += c.name + '\n';
+  for (std::size_t i = 0; i < k; ++i) append_row_text(text, rows_[i]);
+  return fnv1a64(text);
 }
 
 CsvSeries CsvSeries::load(const std::filesystem::path& path) {

@@ -5,6 +5,7 @@
 // reload is bit-exact and the output deterministic. The file is small and is rewritten
 // atomically on every add_row, so a killed run never leaves a torn last line.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -29,6 +30,9 @@ class CsvSeries {
   void truncate(std::size_t k);
   // Writes the file as it stands (header only when there are no rows).
   void save() const;
+  // A fingerprint of the column names and the first k rows as written: a checkpoint keeps
+  // it so that a resume recognises a series of another run.
+  std::uint64_t digest(std::size_t k) const;
 
   const std::filesystem::path& path() const { return path_; }
   const std::vector<Column>& columns() const { return columns_; }

@@ -8,7 +8,17 @@ namespace orogen::h5 {
 namespace {
 
 // HDF5 prints its error stack to stderr by default; we turn it into exception text instead.
-void quiet() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+// Silences HDF5's own error printing (errors become exceptions with its message), once per
+// process. Also keeps HDF5 from closing, at exit, the files whose close failed: a file that
+// could not be flushed (a full disk) is left half-freed inside HDF5 1.10, and its own clean-up
+// at exit then dies by SIGSEGV (H5F__close_cb). Every file this program writes is closed
+// explicitly (and made durable with fsync) before it counts, so nothing rests on that
+// clean-up. H5dont_atexit must come before any other HDF5 call.
+void quiet() {
+  static const bool no_atexit = H5dont_atexit() >= 0;
+  (void)no_atexit;
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
 
 // The text between `key = '` and the next quote in HDF5's description, or "".
 std::string quoted_field(const std::string& desc, const std::string& key) {

@@ -26,8 +26,7 @@ SnapshotReader::SnapshotReader(const std::filesystem::path& path)
 }
 
 bool SnapshotReader::has_group(std::int64_t k, const std::string& group) const {
-  if (k < 0 || k >= count_)
-    throw std::out_of_range(fmt::format("'{}' has {} complete outputs, no output {}", path_.string(), count_, k));
+  check_index(k);
   h5::Group g = h5::Group::open(file_.id(), snapshot_group_name(k));
   return h5::exists(g.id(), group) && h5::is_group(g.id(), group);
 }
@@ -47,9 +46,21 @@ h5::Matrix SnapshotReader::read_group_dataset(std::int64_t k, const std::string&
   return h5::read_2d(g.id(), name);
 }
 
-Snapshot SnapshotReader::read(std::int64_t k) const {
+OutputStamp SnapshotReader::stamp(std::int64_t k) const {
+  check_index(k);
+  h5::Group g = h5::Group::open(file_.id(), snapshot_group_name(k));
+  OutputStamp s{.step = h5::get_attr_int64(g.id(), "step"), .time = h5::get_attr_double(g.id(), "time"), .config_toml = {}};
+  if (h5::has_attr(g.id(), kConfigAttr)) s.config_toml = h5::get_attr_string(g.id(), kConfigAttr);
+  return s;
+}
+
+void SnapshotReader::check_index(std::int64_t k) const {
   if (k < 0 || k >= count_)
     throw std::out_of_range(fmt::format("'{}' has {} complete outputs, no output {}", path_.string(), count_, k));
+}
+
+Snapshot SnapshotReader::read(std::int64_t k) const {
+  check_index(k);
   h5::Group g = h5::Group::open(file_.id(), snapshot_group_name(k));
   Snapshot s;
   s.step = h5::get_attr_int64(g.id(), "step");

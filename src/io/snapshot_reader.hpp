@@ -27,6 +27,14 @@ struct Snapshot {
   const std::vector<double>& field(const std::string& name) const;
 };
 
+// What an output says of itself, without its data: its step, time and the resolved
+// configuration it was written with ("" in files made before outputs carried it).
+struct OutputStamp {
+  std::int64_t step = 0;
+  double time = 0;
+  std::string config_toml;
+};
+
 class SnapshotReader {
  public:
   // Opens read-only and keeps the file open; checks format and version.
@@ -34,6 +42,7 @@ class SnapshotReader {
 
   std::int64_t count() const { return count_; }  // complete outputs (n_outputs)
   Snapshot read(std::int64_t k) const;           // 0 <= k < count()
+  OutputStamp stamp(std::int64_t k) const;       // the attributes of output k alone
   const SnapshotMetadata& metadata() const { return meta_; }
   // The extra groups of output k (SnapshotFrame::groups): whether it has one, and a float
   // dataset of it (1-D as rows x 1).
@@ -41,6 +50,8 @@ class SnapshotReader {
   h5::Matrix read_group_dataset(std::int64_t k, const std::string& group, const std::string& name) const;
 
  private:
+  void check_index(std::int64_t k) const;  // throws std::out_of_range unless 0 <= k < count()
+
   std::filesystem::path path_;
   h5::File file_;
   std::int64_t count_ = 0;

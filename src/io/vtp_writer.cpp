@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "io/atomic_file.hpp"
+#include "io/binary_archive.hpp"
 #include "io/wall_display.hpp"
 #include "io/xml_escape.hpp"
 
@@ -121,7 +122,7 @@ std::vector<T> padded(const std::vector<T>& v, std::size_t pad, T fill) {
 
 }  // namespace
 
-void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame) {
+std::uint64_t write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame) {
   if (frame.discs == nullptr) throw std::invalid_argument("vtp frame has no discs");
   const Discs& d = *frame.discs;
   const std::size_t n = d.size();
@@ -195,6 +196,7 @@ void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame) {
   out += "  </PolyData>\n";
   out += "</VTKFile>\n";
   write_file_atomically(path, out);
+  return fnv1a64(out);
 }
 
 void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<double, std::string>>& entries) {

@@ -3,6 +3,7 @@
 // collection that lists them with their times. Array data is inline base64 binary
 // (format="binary", UInt64 size header, no compression): valid XML, about a third the
 // size of ASCII, and bit-exact. Every file is written atomically.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -17,8 +18,9 @@ namespace orogen {
 // velocity (vx, vy, 0), omega, theta, depth0 and the frame's extra fields; field data:
 // TimeValue, step and the frame's scalar attrs. The walls, clipped around the discs
 // (wall_display.hpp), follow the discs as two points each (radius 0, id -1, NaN fields)
-// joined by one line cell per wall.
-void write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame);
+// joined by one line cell per wall. Returns the fnv1a64 digest of the bytes written (a
+// checkpoint keeps it, so that a resume recognises a file of another run).
+std::uint64_t write_vtp(const std::filesystem::path& path, const SnapshotFrame& frame);
 
 // `entries` are (time, file name relative to the .pvd's directory), in output order.
 void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<double, std::string>>& entries);

@@ -2,13 +2,24 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
+#include <fstream>
+
 #include "io/atomic_file.hpp"
 
 namespace orogen {
+namespace {
+
+std::string removal_row(const RemovalRecord& r) {
+  static constexpr const char* kReasons[] = {"left_domain", "eroded", "other"};
+  return fmt::format("{},{},{},{},{},{},{}", r.step, r.time, r.id, r.cluster_id, r.x, r.y,
+                     kReasons[static_cast<int>(r.reason)]);
+}
+
+}  // namespace
 
 void write_removal_log(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals,
                        std::uint64_t through_step) {
-  static constexpr const char* kReasons[] = {"left_domain", "eroded", "other"};
   std::string text =
       "# particles removed from the model, one row each; lengths in d (model coordinates, not h0 from the "
       "S-point as in a wedge's series.csv)\n"
@@ -21,10 +32,31 @@ void write_removal_log(const std::filesystem::path& path, const std::vector<Remo
       "# reason: left_domain, eroded or other (trimming a packing) [-]\n" +
       fmt::format("# through_step: {} (every removal up to this time step is listed)\n", through_step) +
       "step,time,id,cluster_id,x,y,reason\n";
-  for (const auto& r : removals)
-    text += fmt::format("{},{},{},{},{},{},{}\n", r.step, r.time, r.id, r.cluster_id, r.x, r.y,
-                        kReasons[static_cast<int>(r.reason)]);
+  for (const auto& r : removals) text += removal_row(r) + '\n';
   write_file_atomically(path, text);
+}
+
+std::string removal_log_difference(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals,
+                                   std::uint64_t through_step) {
+  std::ifstream in(path);
+  if (!in) return "";
+  std::size_t next = 0;  // the checkpoint's removal the next row must be
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.empty() || line.front() == '#' || line.starts_with("step,")) continue;
+    std::uint64_t step = 0;
+    const auto [end, ec] = std::from_chars(line.data(), line.data() + line.size(), step);
+    if (ec != std::errc() || end == line.data() + line.size() || *end != ',')
+      return fmt::format("line {} is not a row of removals ({})", number, line);
+    if (step > through_step) break;
+    if (next >= removals.size() || line != removal_row(removals[next]))
+      return fmt::format("line {} ({}) is not the checkpoint's removal {} ({})", number, line, next,
+                         next < removals.size() ? removal_row(removals[next]) : "none");
+    ++next;
+  }
+  if (next < removals.size())
+    return fmt::format("it lists {} removals up to step {}, the checkpoint {}", next, through_step, removals.size());
+  return "";
 }
 
 }  // namespace orogen

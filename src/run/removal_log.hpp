@@ -2,6 +2,7 @@
 // removals.csv: every particle removed from the model (left the domain, eroded, trimmed).
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "world/world.hpp"
@@ -12,5 +13,12 @@ namespace orogen {
 // line, so that a reader of a running run knows which outputs it covers).
 void write_removal_log(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals,
                        std::uint64_t through_step);
+
+// The first row of the removals file at `path` that disagrees with `removals` (a checkpoint's
+// list) among the rows up to `through_step`, described for a message; "" when they agree or
+// there is no file. Rows after `through_step` were written after that checkpoint and are not
+// compared. A resume refuses a folder whose file is of another run.
+std::string removal_log_difference(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals,
+                                   std::uint64_t through_step);
 
 }  // namespace orogen

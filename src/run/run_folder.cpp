@@ -1,20 +1,10 @@
 #include "run/run_folder.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cstring>
-#include <map>
-
-#include "config/config.hpp"
-#include "io/binary_archive.hpp"
 
 namespace fs = std::filesystem;
 
@@ -27,79 +17,44 @@ constexpr std::array<const char*, 13> kRunOutputs = {"checkpoint.bin", "snapshot
                                                      "packing.h5",     "profile.csv",  "run.log",      "snapshots.xmf",
                                                      "packing.xmf"};
 
-// Keys that change how fast or how visibly a run goes, never what it computes.
-constexpr std::array<std::string_view, 7> kKeysOutsideIdentity = {
-    "run.threads",     "run.adapt_threads",       "run.adapt_slice",    "output.progress",
-    "output.checkpoint_every", "output.vtp", "singly.speed_bound"};
-
-// Keys added after runs were made whose defaults compute what those runs computed: a run
-// started before they existed keeps its identity and resumes. They enter the identity only
-// when set away from their defaults, and one absent from a stored configuration (a checkpoint
-// of such a run) stands for its default.
-constexpr std::array<std::string_view, 4> kLaterKeys = {"contact.normal_force", "contact.damping",
-                                                        "contact.damping_rate", "singly.speed_bound"};
-
-bool is_later_key(std::string_view key) {
-  return std::find(kLaterKeys.begin(), kLaterKeys.end(), key) != kLaterKeys.end();
+bool is_run_folder(const fs::path& dir) {
+  std::error_code ec;
+  return fs::is_regular_file(dir / "config.toml", ec) &&
+         (fs::exists(dir / "run.lock", ec) || fs::exists(dir / "snapshots.h5", ec) ||
+          fs::exists(dir / "checkpoint.bin", ec));
 }
 
-const std::map<std::string, std::string>& default_values();
-
-constexpr std::array<std::string_view, 2> kExtensionKeys = {"wedge.s_end", "wedge.outputs"};
+// A name of the run's own files, or of what analyze writes there.
+bool is_run_file_name(std::string_view name) {
+  if (name == "config.toml" || name == "run.lock" || name.starts_with("analysis")) return true;
+  return std::find(kRunOutputs.begin(), kRunOutputs.end(), name) != kRunOutputs.end();
+}
 
 bool is_temporary(const fs::path& p) { return p.filename().string().find(".tmp-") != std::string::npos; }
 
+bool create_folder(const fs::path& dir) {
+  std::error_code ec;
+  const bool created = fs::create_directories(dir, ec);
+  if (ec) throw RunFolderIoError(fmt::format("cannot create the run folder {}: {}", dir.string(), ec.message()));
+  return created;
+}
+
 }  // namespace
 
-// "section.key" -> value text of each assignment line of a resolved configuration.
-std::map<std::string, std::string> key_values(std::string_view toml) {
-  std::map<std::string, std::string> out;
-  std::string section;
-  std::size_t begin = 0;
-  while (begin < toml.size()) {
-    std::size_t end = toml.find('\n', begin);
-    if (end == std::string_view::npos) end = toml.size();
-    const std::string_view line = toml.substr(begin, end - begin);
-    begin = end + 1;
-    if (line.empty() || line.front() == '#') continue;
-    if (line.front() == '[' && line.back() == ']') {
-      section = std::string(line.substr(1, line.size() - 2));
-      continue;
-    }
-    const std::size_t eq = line.find(" = ");
-    if (eq == std::string_view::npos) continue;
-    out[section + "." + std::string(line.substr(0, eq))] = std::string(line.substr(eq + 3));
-  }
-  return out;
-}
-
-
-RunFolderLock::RunFolderLock(const fs::path& dir) : dir_(dir) {
-  std::error_code ec;
-  created_dir_ = fs::create_directories(dir, ec);
-  if (ec) throw RunFolderError(fmt::format("cannot create the run folder {}: {}", dir.string(), ec.message()));
-  const fs::path lock = dir / "run.lock";
-  fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0)
-    throw RunFolderError(fmt::format("cannot write in the run folder {}: {}", dir.string(), std::strerror(errno)));
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    ::close(fd_);
-    fd_ = -1;
+RunFolderLock::RunFolderLock(const fs::path& dir)
+    : dir_(dir), created_dir_(create_folder(dir)), lock_(dir / "run.lock") {
+  if (lock_.open_error() != 0)
+    throw RunFolderIoError(
+        fmt::format("cannot write in the run folder {}: {}", dir.string(), std::strerror(lock_.open_error())));
+  if (!lock_.locked())
     throw RunFolderError(fmt::format("{} is in use by another orogen process (it holds {}); wait for it to end or "
                                      "choose another folder",
-                                     dir.string(), lock.string()));
-  }
-}
-
-RunFolderLock::~RunFolderLock() {
-  if (fd_ >= 0) ::close(fd_);  // closing drops the lock
+                                     dir.string(), lock_.path().string()));
 }
 
 void RunFolderLock::abandon() {
+  lock_.release_and_remove();
   std::error_code ec;
-  fs::remove(dir_ / "run.lock", ec);
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
   if (created_dir_ && fs::is_empty(dir_, ec)) fs::remove(dir_, ec);
 }
 
@@ -115,6 +70,32 @@ void remove_run_outputs(const fs::path& dir) {
     if (std::string_view(name) != "run.log") fs::remove_all(dir / name);
 }
 
+std::optional<RunFileAt> run_file_at(const fs::path& target) {
+  std::error_code ec;
+  const fs::path full = fs::weakly_canonical(fs::absolute(target, ec), ec);
+  if (ec) return std::nullopt;
+  for (fs::path dir = full;; dir = dir.parent_path()) {
+    if (is_run_folder(dir)) {
+      const fs::path rel = full.lexically_relative(dir);
+      const std::string first = rel.empty() || rel == "." ? "" : rel.begin()->string();
+      if (first.empty() || is_run_file_name(first)) return RunFileAt{dir, first};
+      return std::nullopt;
+    }
+    if (dir == dir.parent_path()) return std::nullopt;
+  }
+}
+
+std::string run_file_refusal(std::string_view option, const fs::path& target) {
+  const auto at = run_file_at(target);
+  if (!at) return "";
+  if (at->name.empty())
+    return fmt::format("{} {}: that is the folder of a run; give a file or folder outside the run's own files",
+                       option, target.string());
+  return fmt::format("{} {}: {} belongs to the run in {}, which only that run (and orogen analyze, for its analysis "
+                     "files) may write; give a path outside the run's own files",
+                     option, target.string(), at->name, at->run.string());
+}
+
 int remove_temporary_files(const fs::path& dir) {
   int removed = 0;
   for (const fs::path& folder : {dir, dir / "vtp", dir / "snapshots"}) {
@@ -125,79 +106,6 @@ int remove_temporary_files(const fs::path& dir) {
     for (const auto& p : stale) removed += fs::remove(p) ? 1 : 0;
   }
   return removed;
-}
-
-namespace {
-const std::map<std::string, std::string>& default_values() {
-  static const std::map<std::string, std::string> defaults = key_values(Config().to_toml());
-  return defaults;
-}
-
-// The key-value pairs of a stored configuration, a later key it lacks at its default.
-std::map<std::string, std::string> stored_key_values(std::string_view toml) {
-  auto kv = key_values(toml);
-  for (const auto key : kLaterKeys) kv.emplace(std::string(key), default_values().at(std::string(key)));
-  return kv;
-}
-}  // namespace
-
-std::string config_differences(std::string_view here, std::string_view there, std::string_view here_name,
-                               std::string_view there_name) {
-  const auto a = stored_key_values(here), b = stored_key_values(there);
-  std::string out;
-  auto add = [&](const std::string& key, const std::string& va, const std::string& vb) {
-    out += fmt::format("{}{} = {} in {}, {} in {}", out.empty() ? "" : "; ", key, va.empty() ? "(absent)" : va,
-                       here_name, vb.empty() ? "(absent)" : vb, there_name);
-  };
-  // Keys that may differ between the two: they extend a run, or change only how it goes or
-  // what is computed from its outputs.
-  auto free_to_differ = [](const std::string& key) {
-    return is_extension_key(key) || is_analysis_key(key) || is_display_key(key);
-  };
-  for (const auto& [key, value] : a) {
-    if (free_to_differ(key)) continue;
-    const auto it = b.find(key);
-    if (it == b.end()) add(key, value, "");
-    else if (it->second != value) add(key, value, it->second);
-  }
-  for (const auto& [key, value] : b)
-    if (!a.contains(key) && !free_to_differ(key)) add(key, "", value);
-  return out;
-}
-
-// The [analysis] keys say only what is computed from the outputs, never what is simulated:
-// outside the identity, and free to differ between a checkpoint and config.toml.
-bool is_analysis_key(std::string_view key) { return key.starts_with("analysis."); }
-
-bool is_display_key(std::string_view key) {
-  return std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) != kKeysOutsideIdentity.end();
-}
-
-bool is_extension_key(std::string_view key) {
-  return std::find(kExtensionKeys.begin(), kExtensionKeys.end(), key) != kExtensionKeys.end();
-}
-
-std::string extension_changes(std::string_view now, std::string_view before) {
-  const auto a = key_values(now), b = key_values(before);
-  std::string out;
-  for (const auto key : kExtensionKeys) {
-    const auto ia = a.find(std::string(key)), ib = b.find(std::string(key));
-    if (ia == a.end() || ib == b.end() || ia->second == ib->second) continue;
-    out += fmt::format("{}{} {} -> {}", out.empty() ? "" : ", ", key, ib->second, ia->second);
-  }
-  return out.empty() ? "no key changed" : out;
-}
-
-std::string extension_keys_text() { return fmt::format("{}", fmt::join(kExtensionKeys, ", ")); }
-
-std::string run_identity(const Config& config) {
-  std::string text;
-  for (const auto& [key, value] : key_values(config.to_toml())) {
-    if (is_later_key(key) && default_values().at(key) == value) continue;
-    if (!is_display_key(key) && !is_extension_key(key) && !is_analysis_key(key))
-      text += key + "=" + value + "\n";
-  }
-  return fmt::format("{:016x}", fnv1a64(text));
 }
 
 }  // namespace orogen

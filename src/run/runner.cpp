@@ -28,6 +28,7 @@
 #include "io/snapshot_writer.hpp"
 #include "io/vtp_writer.hpp"
 #include "run/branch_source.hpp"
+#include "run/kept_files.hpp"
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
 #include "run/run_folder.hpp"
@@ -49,6 +50,9 @@ struct UsageError : std::runtime_error {
 struct RunState {
   std::int64_t outputs = 0;          // output steps written
   std::vector<double> output_times;  // for run.pvd
+  // Per output, the digest of its .vtp file (0: none written), so that a resume recognises
+  // a file of another run; empty in checkpoints written before digests were kept.
+  std::vector<std::uint64_t> vtp_digests;
   bool finished = false;
 };
 
@@ -61,8 +65,6 @@ ContactOutputOptions contact_output_options(const Config& config) {
                        "must be 0 (no grid) or at least 0.5 (cell size in d)");
   return o;
 }
-
-std::string vtp_name(std::int64_t k) { return fmt::format("vtp/output_{:06d}.vtp", k); }
 
 // The log goes to run.log and to stderr; the stderr sink also carries the progress line.
 std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir, const std::shared_ptr<StatusLineSink>& console) {
@@ -131,7 +133,9 @@ class Run {
     if (in.has("run.output_base")) output_base_ = in.get_scalar<double>("run.output_base");  // a branch
     if (in.has("run.branch_from")) branch_from_ = in.get_string("run.branch_from");
     checkpoint_config_ = in.get_string("run.config");
-    check_outputs_belong();
+    if (in.has("run.vtp_digests")) in.get("run.vtp_digests", state_.vtp_digests);
+    check_kept_files(in.has("run.series_digest") ? std::optional(in.get_scalar<std::uint64_t>("run.series_digest"))
+                                                 : std::nullopt);
   }
 
   // Continues the outputs after the checkpoint's last one; later ones are dropped and written
@@ -139,15 +143,11 @@ class Run {
   void reopen_outputs() {
     snapshots_.emplace(SnapshotWriter::reopen(dir_ / "snapshots.h5", state_.outputs));
     snapshots_->set_metadata_string(kConfigAttr, config_.to_toml());  // an extension's new end
-    series_.emplace(CsvSeries::load(dir_ / "series.csv"));
-    if (series_->rows().size() < static_cast<std::size_t>(state_.outputs))
-      throw RunFolderError(fmt::format("{} has {} rows but the checkpoint counts {} outputs: the files are not of "
-                                       "one run",
-                                       (dir_ / "series.csv").string(), series_->rows().size(), state_.outputs));
     series_->truncate(static_cast<std::size_t>(state_.outputs));
     for (std::int64_t k = state_.outputs;; ++k) {
-      if (!fs::remove(dir_ / vtp_name(k))) break;
+      if (!fs::remove(dir_ / vtp_file_name(k))) break;
     }
+    state_.vtp_digests.resize(static_cast<std::size_t>(state_.outputs), 0);
     if (write_vtp_) write_pvd_file();
     write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
     log().info("resumed at step {} (t = {:.6g}) after output {}", world_.step, world_.time, state_.outputs - 1);
@@ -325,9 +325,7 @@ class Run {
       if (w.enabled) frame.walls.push_back({w.ax, w.ay, w.bx, w.by});
     frame.groups = contact_output_groups(world_, contact_output_);
     snapshots_->append(frame);
-    if (write_vtp_) {
-      write_vtp(dir_ / vtp_name(state_.outputs), frame);
-    }
+    state_.vtp_digests.push_back(write_vtp_ ? write_vtp(dir_ / vtp_file_name(state_.outputs), frame) : 0);
     series_->add_row(exp_->measure(world_));
     write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
     state_.output_times.push_back(world_.time);
@@ -369,7 +367,7 @@ class Run {
 
   void write_pvd_file() {
     std::vector<std::pair<double, std::string>> entries;
-    for (std::int64_t k = 0; k < state_.outputs; ++k) entries.emplace_back(state_.output_times[k], vtp_name(k));
+    for (std::int64_t k = 0; k < state_.outputs; ++k) entries.emplace_back(state_.output_times[k], vtp_file_name(k));
     write_pvd(dir_ / "run.pvd", entries);
   }
 
@@ -379,6 +377,8 @@ class Run {
     exp_->save(out);
     out.put_scalar("run.outputs", state_.outputs);
     out.put("run.output_times", state_.output_times);
+    out.put("run.vtp_digests", state_.vtp_digests);
+    out.put_scalar("run.series_digest", series_->digest(static_cast<std::size_t>(state_.outputs)));
     out.put_scalar<std::uint8_t>("run.finished", state_.finished ? 1 : 0);
     out.put_scalar("run.last_output_step", last_output_step_);
     out.put_scalar("run.output_base", output_base_);
@@ -406,15 +406,19 @@ class Run {
                                        ckpt.string(), in.get_string("run.identity"), identity_));
   }
 
-  // The snapshot index must come from this run too.
-  void check_outputs_belong() const {
-    const fs::path index = dir_ / "snapshots.h5";
-    if (!fs::exists(index)) throw RunFolderError(fmt::format("{} is missing: the run's outputs are gone", index.string()));
-    const SnapshotMetadata meta = read_snapshot_metadata(index);
-    const auto it = meta.strings.find("run_identity");
-    if (it == meta.strings.end() || it->second != identity_)
-      throw RunFolderError(fmt::format("{} comes from another run (identity {}, this configuration's is {})",
-                                       index.string(), it == meta.strings.end() ? "none" : it->second, identity_));
+  // Every file the resume keeps must be of this run (kept_files.hpp); loads the series for
+  // reopen_outputs().
+  void check_kept_files(std::optional<std::uint64_t> series_digest) {
+    KeptFiles kept{.identity = identity_,
+                   .config_toml = config_.to_toml(),
+                   .output_times = state_.output_times,
+                   .vtp_digests = state_.vtp_digests,
+                   .series_digest = series_digest,
+                   .series_columns = {},
+                   .removals = world_.removals,
+                   .step = world_.step};
+    for (const auto& col : exp_->columns()) kept.series_columns.push_back(col.name);
+    series_.emplace(check_kept_files_of_run(dir_, kept));
   }
 
   const Config& config_;
@@ -486,9 +490,19 @@ bool is_branch_folder(const fs::path& dir) {
 // of the source from its set-up (bitwise the same run) to that output.
 void build_branch(Run& run, const BranchSource& source, const fs::path& out) {
   const fs::path h5 = source.dir / "snapshots.h5";
-  const Snapshot snap = SnapshotReader(h5).read(source.output);
+  const SnapshotReader reader(h5);
+  const std::string identity = run_identity(source.config);
+  const fs::path file = source.dir / "snapshots" / (snapshot_group_name(source.output) + ".h5");
+  if (const std::string why = foreign_output(reader, source.output, identity, source.config.to_toml(), file);
+      !why.empty())
+    throw BranchError(fmt::format("--from {}: {}", source.text(), why));
+  const Snapshot snap = reader.read(source.output);
   if (source.at_checkpoint) {
-    run.load_branch(ArchiveReader(source.dir / "checkpoint.bin"), source, snap);
+    const ArchiveReader checkpoint(source.dir / "checkpoint.bin");
+    if (!checkpoint.has("run.identity") || checkpoint.get_string("run.identity") != identity)
+      throw BranchError(fmt::format("--from {}: {} comes from another run than {}", source.text(),
+                                    (source.dir / "checkpoint.bin").string(), (source.dir / "config.toml").string()));
+    run.load_branch(checkpoint, source, snap);
     return;
   }
   const SnapshotMetadata meta = read_snapshot_metadata(h5);
@@ -607,6 +621,14 @@ int run_command(const RunOptions& opt) {
     const int threads = opt.threads >= 0 ? opt.threads : config.get_int32("run.threads");
     if (threads > 0) omp_set_num_threads(threads);
 
+    // A run that starts from its set-up with nothing to build: refused, as it could only run empty.
+    if (!source && !opt.before_first_output && config.get_string("run.experiment") == "scripted" &&
+        !(opt.resume && fs::exists(opt.out / "checkpoint.bin")))
+      throw UsageError("run.experiment = \"scripted\" builds no discs itself: they come from a Python setup "
+                       "function (orogen.run(config, out=DIR, setup=build); docs/python.md), which the command line "
+                       "cannot give; from the command line, choose another experiment, or branch a scripted run "
+                       "with --from");
+
     RunFolderLock lock(opt.out);
     // A resume without a checkpoint (killed during set-up) starts the run again from its set-up.
     const bool from_checkpoint = opt.resume && fs::exists(opt.out / "checkpoint.bin");
@@ -617,7 +639,8 @@ int run_command(const RunOptions& opt) {
       throw UsageError(fmt::format("--resume {}: this branch was stopped before its first checkpoint; remove the "
                                    "folder and start the branch again",
                                    opt.out.string()));
-    const int stale = remove_temporary_files(opt.out);
+    // A resume from a checkpoint changes nothing before every kept file is checked (below).
+    int stale = from_checkpoint ? 0 : remove_temporary_files(opt.out);
     if (opt.resume && !from_checkpoint) remove_run_outputs(opt.out);
 
     // A resume's configuration as stored: the folder's, with only the extension keys changed.
@@ -628,6 +651,7 @@ int run_command(const RunOptions& opt) {
     run.between_steps(opt.between_steps, opt.between_every);
     if (from_checkpoint) {
       run.load_checkpoint(!extending.empty());
+      stale = remove_temporary_files(opt.out);
     } else {
       try {
         if (source) {
@@ -635,6 +659,9 @@ int run_command(const RunOptions& opt) {
         } else {
           run.setup();
           if (opt.before_first_output) run.build_on_setup(opt.before_first_output);
+          else if (run.world().discs.size() == 0)
+            throw UsageError("the set-up made no discs, so the run could only run empty; make the layer larger "
+                             "(layer.length, layer.thickness)");
         }
       } catch (const InstabilityError& e) {
         if (!opt.resume) release_new_run(opt, lock);

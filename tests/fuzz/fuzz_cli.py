@@ -90,6 +90,9 @@ class Case:
         self.argv = []
         self.allow_exit1 = False
         self.setup = None      # callable(case_dir) for cases needing a real run folder
+        self.env = {}          # extra environment variables of the case
+        self.expect = None     # the exit status the case must end with, where it is known
+        self.after = None      # callable(case_dir) -> failure text or None, checked after the run
         self.note = ""
 
     def command_line(self, binary):
@@ -345,6 +348,7 @@ def render_case(rng, case, base_run):
                 f.write(data)
 
     case.setup = setup
+    case.allow_exit1 = damage in ("truncate", "flip", "empty", "text")  # a damaged file is I/O: exit 1
     if damage == "no_dir":
         target = "nosuch"
     elif damage == "file":
@@ -352,6 +356,101 @@ def render_case(rng, case, base_run):
         target = "afile"
     case.argv = ["render", target, "--no-animation"] + opts
     case.note = "render (" + damage + ") " + " ".join(opts)
+
+
+def folder_digest(folder):
+    """Every file under `folder` with its bytes: what a refusal must leave as it was."""
+    out = {}
+    for top, _, files in os.walk(folder):
+        for name in files:
+            path = os.path.join(top, name)
+            with open(path, "rb") as f:
+                out[os.path.relpath(path, folder)] = f.read()
+    return out
+
+
+def unchanged_after(case, folder_name):
+    """Records the folder's files at set-up (after `prepare`) and checks them after the run."""
+    before = {}
+
+    def record(case_dir):
+        before.update(folder_digest(os.path.join(case_dir, folder_name)))
+
+    def check_after(case_dir):
+        after = folder_digest(os.path.join(case_dir, folder_name))
+        changed = sorted(set(before) ^ set(after) | {k for k in before if k in after and before[k] != after[k]})
+        return "the refusal changed %s: %s" % (folder_name, ", ".join(changed[:5])) if changed else None
+
+    case.after = check_after
+    return record
+
+
+def mixed_case(rng, case, bases):
+    """A stopped run with one file of another run (another seed) copied in: --resume must refuse
+    it (exit 2, naming the file) and change nothing."""
+    # The stopped run's checkpoint keeps outputs 0 and 1 (output 2 came after it and is written again).
+    foreign = rng.choice(["snapshots/output_000000.h5", "snapshots/output_000001.h5", "series.csv", "removals.csv",
+                          "vtp/output_000001.vtp"])
+    record = unchanged_after(case, "run")
+
+    def setup(case_dir):
+        run = os.path.join(case_dir, "run")
+        shutil.copytree(bases["stopped"], run)
+        source = os.path.join(bases["other"], foreign)
+        if foreign == "removals.csv":
+            # The other run's removals, dated before the checkpoint: rows this run never wrote.
+            rows = [l for l in open(source).read().split("\n") if l and not l.startswith("#")]
+            body = [",".join(["1"] + r.split(",")[1:]) for r in rows[1:]] or ["1,0.001,0,-1,0.5,0.5,other"]
+            with open(os.path.join(run, foreign), "w") as f:
+                f.write("# foreign\n" + rows[0] + "\n" + "\n".join(body) + "\n")
+        else:
+            shutil.copyfile(source, os.path.join(run, foreign))
+        record(case_dir)
+
+    case.setup = setup
+    case.argv = ["run", "--resume", "run"] + rng.choice([[], ["--set", "output.progress=never"], ["--threads", "1"]])
+    case.expect = 2
+    case.note = "resume with a foreign " + foreign
+
+
+def export_into_case(rng, case, bases):
+    """`orogen export` (or render, report) with a target among a run's own files: refused (exit 2)
+    and the run left as it was."""
+    record = unchanged_after(case, "run")
+    case.setup = lambda case_dir: (shutil.copytree(bases["finished"], os.path.join(case_dir, "run")),
+                                   record(case_dir))
+    target = rng.choice(["run/snapshots.h5", "run/checkpoint.bin", "run/snapshots/output_000001.h5", "run/series.csv",
+                         "run/config.toml", "run/removals.csv", "run/run.lock", "run/vtp/output_000000.vtp",
+                         "run/analysis.h5", "run", "run/./series.csv", "run/snapshots/../series.csv"])
+    form = rng.choice(["export", "export", "export", "render", "report"])
+    if form == "export":
+        case.argv = ["export", "run", "--format", rng.choice(["csv", "xyz", "lammps-data", "lammps-dump"]),
+                     "--to", target]
+    elif form == "render":
+        case.argv = ["render", "run", "--no-animation", "--frames-dir",
+                     rng.choice(["snapshots", "vtp", "series.csv", "config.toml", "analysis.h5"])]
+    else:
+        case.argv = ["report", ".", "--out", target]
+    case.expect = 2
+    case.note = " ".join(case.argv)
+
+
+def omp_case(rng, case):
+    """A tiny run under odd OpenMP settings: a bad one is refused (exit 2) before anything is
+    written, a good one runs; neither may end by a signal of libgomp's."""
+    name = rng.choice(["OMP_NUM_THREADS", "OMP_NUM_THREADS", "OMP_NUM_THREADS", "OMP_PROC_BIND", "OMP_WAIT_POLICY",
+                       "OMP_DYNAMIC", "OMP_STACKSIZE", "OMP_THREAD_LIMIT", "GOMP_SPINCOUNT"])
+    good = {"OMP_NUM_THREADS": ["1", "2", "2,1", " 2 "], "OMP_PROC_BIND": ["true", "close", "spread,close"],
+            "OMP_WAIT_POLICY": ["passive", "ACTIVE"], "OMP_DYNAMIC": ["false", "TRUE"],
+            "OMP_STACKSIZE": ["8M", "512k", "1048576"], "OMP_THREAD_LIMIT": ["4"], "GOMP_SPINCOUNT": ["0", "10k", "infinite"]}
+    bad = ["100000", "60000", "1025", "20000", "abc", "0", "-1", "1e3", "1.5", "", "2,,1", "2,0", "sideways", "x"]
+    value = rng.choice(good[name] + bad)
+    case.env = {name: value}
+    if value not in good[name]:
+        case.expect = 2
+    case.argv = ["run", "--set", "run.experiment=packing"] + [a for k, v in TINY.items() if k != "run.threads"
+                                                              for a in ("--set", k + "=" + v)] + ["--out", "out"]
+    case.note = "%s=%r" % (name, value)
 
 
 def sweep_case(rng, case, base_toml, default_keys):
@@ -427,10 +526,11 @@ def sweep_base_toml():
     return "\n".join(lines) + "\n"
 
 
-def generate(seed, index, sources, default_keys, base_run, base_toml):
+def generate(seed, index, sources, default_keys, bases, base_toml):
     rng = random.Random("%d:%d" % (seed, index))
-    kind = rng.choices(["config", "set", "file", "cli", "configcmd", "render", "sweep", "ensemble"],
-                       weights=[40, 18, 5, 10, 2, 15, 10, 6])[0]
+    kind = rng.choices(["config", "set", "file", "cli", "configcmd", "render", "sweep", "ensemble", "mixed", "export",
+                        "omp"],
+                       weights=[40, 18, 5, 10, 2, 15, 10, 6, 6, 4, 5])[0]
     case = Case(index, kind)
     if kind == "config":
         config_case(rng, case, sources, default_keys)
@@ -443,7 +543,13 @@ def generate(seed, index, sources, default_keys, base_run, base_toml):
     elif kind == "configcmd":
         config_command_case(rng, case)
     elif kind == "render":
-        render_case(rng, case, base_run)
+        render_case(rng, case, bases["finished"])
+    elif kind == "mixed":
+        mixed_case(rng, case, bases)
+    elif kind == "export":
+        export_into_case(rng, case, bases)
+    elif kind == "omp":
+        omp_case(rng, case)
     elif kind == "ensemble":
         ensemble_case(rng, case, base_toml, default_keys)
     else:
@@ -458,7 +564,7 @@ NAMES_KEY = re.compile(r"\b[a-z_][a-z0-9_]*\.[a-z_][a-z0-9_]*\b")
 
 def names_something(err, case, case_dir):
     """Whether an exit-2 message names a key, a file path or a command-line argument."""
-    if NAMES_KEY.search(err) or "/" in err:
+    if NAMES_KEY.search(err) or "/" in err or any(name in err for name in case.env):
         return True
     if re.search(r"^(--?[\w-]+|\w+) is required", err, re.M):
         return True  # CLI11 naming a missing option or positional argument ("file is required")
@@ -505,6 +611,7 @@ def run_case(case, binary, root, timeout, memory_mb):
     if case.setup:
         case.setup(case_dir)
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_WAIT_POLICY="passive")
+    env.update(case.env)
     out_path, err_path = os.path.join(root, "out_%06d" % case.index), os.path.join(root, "err_%06d" % case.index)
     timed_out = False
     with open(out_path, "wb") as out, open(err_path, "wb") as err:
@@ -532,6 +639,8 @@ def run_case(case, binary, root, timeout, memory_mb):
     os.remove(out_path)
     os.remove(err_path)
     failure = check(case, case_dir, status, stdout, stderr, timed_out)
+    if failure is None and case.after and not timed_out:
+        failure = case.after(case_dir)
     return case, failure, timed_out, stderr, status
 
 
@@ -546,7 +655,7 @@ def check(case, case_dir, status, stdout, stderr, timed_out):
         return None if status == -signal.SIGKILL else "ended by signal %d after the timeout" % -status
     if status < 0:
         return "killed by signal %d (%s)" % (-status, signal.Signals(-status).name)
-    allowed = {0, 2, 3} | ({1} if case.allow_exit1 else set())
+    allowed = {case.expect} if case.expect is not None else {0, 2, 3} | ({1} if case.allow_exit1 else set())
     if status not in allowed:
         last = [l for l in stderr.strip().split("\n") if l.strip()]
         return "exit %d (allowed %s): %s" % (status, sorted(allowed), (last[-1] if last else "")[:200])
@@ -575,18 +684,23 @@ def keep_failure(keep_dir, root, case, binary, failure, stderr):
                                                      stderr[-4000:]))
 
 
-def make_base_run(binary, root, timeout):
-    """A tiny finished run for the render cases to copy."""
-    run = os.path.join(root, "base_run")
-    argv = [binary, "run", "--set", "run.experiment=packing", "--set", "particles.packing=random_discs"]
-    for key, value in TINY.items():
-        argv += ["--set", key + "=" + value]
-    argv += ["--set", "output.interval=2", "--threads", "1", "--out", run]
-    env = dict(os.environ, OMP_NUM_THREADS="1", OMP_WAIT_POLICY="passive")
-    r = subprocess.run(argv, stdin=subprocess.DEVNULL, capture_output=True, env=env, timeout=max(60, 6 * timeout))
-    if r.returncode != 0:
-        sys.exit("fuzz_cli: cannot make the base run: %s\n%s" % (" ".join(argv), r.stderr.decode(errors="replace")))
-    return run
+def make_base_runs(binary, root, timeout):
+    """Tiny runs for the cases to copy: a finished one (render, export), one stopped after three
+    outputs with a checkpoint at each, and a finished one of another seed (the mixed folders)."""
+    def make(name, extra, status=0):
+        run = os.path.join(root, name)
+        argv = [binary, "run", "--set", "run.experiment=packing", "--set", "particles.packing=random_discs"]
+        for key, value in TINY.items():
+            argv += ["--set", key + "=" + value]
+        argv += ["--set", "output.interval=2", "--set", "output.vtp=true", "--set", "output.checkpoint_every=1",
+                 "--threads", "1", "--out", run] + extra
+        env = dict(os.environ, OMP_NUM_THREADS="1", OMP_WAIT_POLICY="passive")
+        r = subprocess.run(argv, stdin=subprocess.DEVNULL, capture_output=True, env=env, timeout=max(60, 6 * timeout))
+        if r.returncode != status:
+            sys.exit("fuzz_cli: cannot make the base run: %s\n%s" % (" ".join(argv), r.stderr.decode(errors="replace")))
+        return run
+    return {"finished": make("base_run", []), "stopped": make("stopped_run", ["--abort-after-outputs", "3"], 137),
+            "other": make("other_run", ["--set", "run.seed=2"])}
 
 
 def load_sources(binary):
@@ -630,9 +744,9 @@ def main():
     root = tempfile.mkdtemp(prefix="orogen_fuzz_")
     try:
         sources, default_keys = load_sources(binary)
-        base_run = make_base_run(binary, root, args.timeout)
+        bases = make_base_runs(binary, root, args.timeout)
         base_toml = sweep_base_toml()
-        cases = [generate(args.seed, i, sources, default_keys, base_run, base_toml)
+        cases = [generate(args.seed, i, sources, default_keys, bases, base_toml)
                  for i in range(args.first, args.first + count)]
         failed = passed = timeouts = 0
         endings = {}  # kind -> exit status -> cases: shows whether the mutations get past the checks

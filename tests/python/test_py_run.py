@@ -119,3 +119,16 @@ def test_two_threads_same_bits(cli_wedge, tmp_path):
     """threads= reaches the engine; a tiny wedge stays below the parallel loops (2048 discs)."""
     orogen.run(TINY_WEDGE, out=tmp_path / "t2", threads=2, hook=lambda w: None, every=100)
     assert_same_bits(cli_wedge, tmp_path / "t2")
+
+
+def test_bad_openmp_variables_raise_config_error_before_anything_is_written(tmp_path, monkeypatch):
+    """The CLI's check of the OpenMP variables (exit 2 there) is a ConfigError here (issue 35)."""
+    import pytest
+    for name, value in (("OMP_NUM_THREADS", "100000"), ("OMP_PROC_BIND", "sideways")):
+        with monkeypatch.context() as m:
+            m.setenv(name, value)
+            with pytest.raises(orogen.ConfigError, match=name):
+                orogen.run(TINY_WEDGE, out=tmp_path / "r")
+            with pytest.raises(orogen.ConfigError, match=name):
+                orogen.Simulation(TINY_WEDGE)
+    assert not (tmp_path / "r").exists()

@@ -1,0 +1,146 @@
+#include "config/run_identity.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <array>
+
+#include "config/config.hpp"
+#include "io/binary_archive.hpp"
+#include "io/snapshot_reader.hpp"
+
+namespace orogen {
+namespace {
+
+// Keys that change how fast or how visibly a run goes, never what it computes.
+constexpr std::array<std::string_view, 7> kKeysOutsideIdentity = {
+    "run.threads",     "run.adapt_threads",       "run.adapt_slice",    "output.progress",
+    "output.checkpoint_every", "output.vtp", "singly.speed_bound"};
+
+// Keys added after runs were made whose defaults compute what those runs computed: a run
+// started before they existed keeps its identity and resumes. They enter the identity only
+// when set away from their defaults, and one absent from a stored configuration (a checkpoint
+// of such a run) stands for its default.
+constexpr std::array<std::string_view, 4> kLaterKeys = {"contact.normal_force", "contact.damping",
+                                                        "contact.damping_rate", "singly.speed_bound"};
+
+bool is_later_key(std::string_view key) {
+  return std::find(kLaterKeys.begin(), kLaterKeys.end(), key) != kLaterKeys.end();
+}
+
+const std::map<std::string, std::string>& default_values();
+
+constexpr std::array<std::string_view, 2> kExtensionKeys = {"wedge.s_end", "wedge.outputs"};
+
+}  // namespace
+
+// "section.key" -> value text of each assignment line of a resolved configuration.
+std::map<std::string, std::string> key_values(std::string_view toml) {
+  std::map<std::string, std::string> out;
+  std::string section;
+  std::size_t begin = 0;
+  while (begin < toml.size()) {
+    std::size_t end = toml.find('\n', begin);
+    if (end == std::string_view::npos) end = toml.size();
+    const std::string_view line = toml.substr(begin, end - begin);
+    begin = end + 1;
+    if (line.empty() || line.front() == '#') continue;
+    if (line.front() == '[' && line.back() == ']') {
+      section = std::string(line.substr(1, line.size() - 2));
+      continue;
+    }
+    const std::size_t eq = line.find(" = ");
+    if (eq == std::string_view::npos) continue;
+    out[section + "." + std::string(line.substr(0, eq))] = std::string(line.substr(eq + 3));
+  }
+  return out;
+}
+
+namespace {
+const std::map<std::string, std::string>& default_values() {
+  static const std::map<std::string, std::string> defaults = key_values(Config().to_toml());
+  return defaults;
+}
+
+// The key-value pairs of a stored configuration, a later key it lacks at its default.
+std::map<std::string, std::string> stored_key_values(std::string_view toml) {
+  auto kv = key_values(toml);
+  for (const auto key : kLaterKeys) kv.emplace(std::string(key), default_values().at(std::string(key)));
+  return kv;
+}
+}  // namespace
+
+std::string config_differences(std::string_view here, std::string_view there, std::string_view here_name,
+                               std::string_view there_name) {
+  const auto a = stored_key_values(here), b = stored_key_values(there);
+  std::string out;
+  auto add = [&](const std::string& key, const std::string& va, const std::string& vb) {
+    out += fmt::format("{}{} = {} in {}, {} in {}", out.empty() ? "" : "; ", key, va.empty() ? "(absent)" : va,
+                       here_name, vb.empty() ? "(absent)" : vb, there_name);
+  };
+  // Keys that may differ between the two: they extend a run, or change only how it goes or
+  // what is computed from its outputs.
+  auto free_to_differ = [](const std::string& key) {
+    return is_extension_key(key) || is_analysis_key(key) || is_display_key(key);
+  };
+  for (const auto& [key, value] : a) {
+    if (free_to_differ(key)) continue;
+    const auto it = b.find(key);
+    if (it == b.end()) add(key, value, "");
+    else if (it->second != value) add(key, value, it->second);
+  }
+  for (const auto& [key, value] : b)
+    if (!a.contains(key) && !free_to_differ(key)) add(key, "", value);
+  return out;
+}
+
+// The [analysis] keys say only what is computed from the outputs, never what is simulated:
+// outside the identity, and free to differ between a checkpoint and config.toml.
+bool is_analysis_key(std::string_view key) { return key.starts_with("analysis."); }
+
+bool is_display_key(std::string_view key) {
+  return std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) != kKeysOutsideIdentity.end();
+}
+
+bool is_extension_key(std::string_view key) {
+  return std::find(kExtensionKeys.begin(), kExtensionKeys.end(), key) != kExtensionKeys.end();
+}
+
+std::string extension_changes(std::string_view now, std::string_view before) {
+  const auto a = key_values(now), b = key_values(before);
+  std::string out;
+  for (const auto key : kExtensionKeys) {
+    const auto ia = a.find(std::string(key)), ib = b.find(std::string(key));
+    if (ia == a.end() || ib == b.end() || ia->second == ib->second) continue;
+    out += fmt::format("{}{} {} -> {}", out.empty() ? "" : ", ", key, ib->second, ia->second);
+  }
+  return out.empty() ? "no key changed" : out;
+}
+
+std::string extension_keys_text() { return fmt::format("{}", fmt::join(kExtensionKeys, ", ")); }
+
+std::string run_identity(const Config& config) { return run_identity_of_toml(config.to_toml()); }
+
+std::string run_identity_of_toml(std::string_view toml) {
+  std::string text;
+  for (const auto& [key, value] : key_values(toml)) {
+    if (is_later_key(key) && default_values().at(key) == value) continue;
+    if (!is_display_key(key) && !is_extension_key(key) && !is_analysis_key(key))
+      text += key + "=" + value + "\n";
+  }
+  return fmt::format("{:016x}", fnv1a64(text));
+}
+
+std::string foreign_output(const SnapshotReader& reader, std::int64_t k, const std::string& identity,
+                           const std::string& config_toml, const std::filesystem::path& file) {
+  const OutputStamp s = reader.stamp(k);
+  if (s.config_toml.empty()) return "";
+  const std::string theirs = run_identity_of_toml(s.config_toml);
+  if (theirs == identity) return "";
+  const std::string keys = config_differences(config_toml, s.config_toml, "this run", "that file");
+  return fmt::format("{} comes from another run (identity {}, this run's is {}){}{}", file.string(), theirs, identity,
+                     keys.empty() ? "" : ": ", keys);
+}
+
+}  // namespace orogen
