@@ -1,6 +1,7 @@
 // orogen: the command line front end. Each subcommand is a thin wrapper over the library.
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <cstdint>
 #include <iostream>
 #include <limits>
@@ -26,14 +27,20 @@ int main(int argc, char** argv) {
   const CLI::Validator not_empty(
       [](std::string& value) { return value.empty() ? std::string("an empty value (a number is needed)") : ""; },
       "", "not empty");
-  // A count must be written as one: CLI11's range check would call "1.5", "1e3" or "abc" "not
-  // in range", which hides what is wrong.
-  const CLI::Validator whole_number(
-      [](std::string& value) {
-        const bool digits = !value.empty() && value.find_first_not_of("0123456789") == std::string::npos;
-        return digits ? std::string() : "'" + value + "' is not a whole number (digits only)";
-      },
-      "", "whole number");
+  // A count, written as one and in its range: CLI11's own range check calls "1.5", "1e3" or
+  // "abc" "not in range", which hides what is wrong.
+  const auto count_in = [](long long lo, long long hi) {
+    return CLI::Validator(
+        [lo, hi](std::string& value) {
+          long long v = 0;
+          const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+          const bool ok = !value.empty() && ec == std::errc() && end == value.data() + value.size() &&
+                          value.front() != '-' && v >= lo && v <= hi;
+          return ok ? std::string() : "'" + value + "' must be a whole number from " + std::to_string(lo) + " to " +
+                                          std::to_string(hi);
+        },
+        "", "count");
+  };
 
   orogen::RunOptions run;
   std::string config_path, out = "out";
@@ -43,8 +50,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", run.overrides, "override a key: --set contact.mu=0.2 (repeatable)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: run.threads, 0 = all cores)")
       ->check(not_empty)
-      ->check(whole_number)
-      ->check(CLI::Range(0, orogen::kMaxThreads));
+      ->check(count_in(0, orogen::kMaxThreads));
   std::string resume_dir;
   auto* resume_opt = run_cmd->add_option("--resume", resume_dir, "continue the killed run in this folder");
   auto* from_opt = run_cmd->add_option(
@@ -89,13 +95,11 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--out,-o", sweep_out, "sweep folder: runs/, logs/, results.csv, results.md")->required();
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "runs at once (default: hardware threads / --threads)")
       ->check(not_empty)
-      ->check(whole_number)
-      ->check(CLI::Range(1, 4096));
+      ->check(count_in(1, 4096));
   sweep_cmd->add_option("--threads", sweep.threads, "threads of each run (more only helps from 16384 discs up)")
       ->capture_default_str()
       ->check(not_empty)
-      ->check(whole_number)
-      ->check(CLI::Range(1, orogen::kMaxThreads));
+      ->check(count_in(1, orogen::kMaxThreads));
   sweep_cmd->add_flag("--render", sweep.render, "render each finished run (horizons and max_rel_disp)");
   sweep_cmd->add_flag("--dry-run", sweep.dry_run, "check the sweep, list its runs and what each needs; run nothing");
 
@@ -108,13 +112,11 @@ int main(int argc, char** argv) {
       ->required();
   ensemble_cmd->add_option("--jobs,-j", ensemble.jobs, "members at once (default: the cores, or the members if fewer)")
       ->check(not_empty)
-      ->check(whole_number)
-      ->check(CLI::Range(1, 4096));
+      ->check(count_in(1, 4096));
   ensemble_cmd->add_option("--threads", ensemble.threads,
                            "threads of each member (default: the cores left over when members are fewer)")
       ->check(not_empty)
-      ->check(whole_number)
-      ->check(CLI::Range(1, orogen::kMaxThreads));
+      ->check(count_in(1, orogen::kMaxThreads));
   ensemble_cmd->add_flag("--dry-run", ensemble.dry_run, "check the ensemble, list its members; run nothing");
   ensemble_cmd->add_flag("--no-stats", ensemble.no_stats, "run the members only (python/ensemble_stats.py DIR later)");
 
@@ -125,8 +127,7 @@ int main(int argc, char** argv) {
   export_cmd->add_option("dir", export_dir, "run folder")->required();
   export_cmd->add_option("--output", export_opt.output, "output index (default: the last)")
       ->check(not_empty)
-      ->check(whole_number)
-      ->check(CLI::Range(std::int64_t{0}, std::numeric_limits<std::int64_t>::max()));
+      ->check(count_in(0, std::numeric_limits<long long>::max()));
   export_cmd->add_option("--format", export_opt.format, "lammps-data | lammps-dump | xyz | csv")->required();
   export_cmd->add_option("--to", export_to, "the file to write")->required();
 
@@ -188,7 +189,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
-  for (const std::string& error : {orogen::parallel_environment_error(), orogen::omp_environment_error(orogen::kMaxThreads)})
+  const std::string environment_errors[] = {orogen::parallel_environment_error(),
+                                            orogen::omp_environment_error(orogen::kMaxThreads)};
+  for (const std::string& error : environment_errors)
     if (!error.empty()) {
       std::cerr << "error: " << error << "\n";
       return 2;

@@ -28,6 +28,8 @@ Snapshot read_output(const ExportCommandOptions& o, std::int64_t& k) {
   std::optional<SnapshotReader> reader;
   try {
     reader.emplace(h5);
+  } catch (const SnapshotFormatError& e) {
+    throw BadInput(fmt::format("{} is not a snapshot file this orogen reads: {}", h5.string(), e.what()));
   } catch (const std::exception& e) {  // a damaged file: exit 1, as any file that cannot be read
     throw std::runtime_error(fmt::format("{} is not a readable orogen snapshot file: {}", h5.string(), e.what()));
   }
@@ -45,7 +47,8 @@ int export_command(const ExportCommandOptions& o) {
   try {
     if (o.output < -1) throw BadInput(fmt::format("--output {}: must be 0 or more (an output index)", o.output));
     if (o.to.empty()) throw BadInput("--to needs a file name");
-    if (const std::string refusal = run_file_refusal("--to", o.to); !refusal.empty()) throw BadInput(refusal);
+    if (const std::string refusal = run_file_refusal("--to " + o.to.string(), o.to); !refusal.empty())
+      throw BadInput(refusal);
     ExportFormat format;
     try {
       format = parse_export_format(o.format);

@@ -118,8 +118,8 @@ void check_options(const RenderCommandOptions& o) {
     throw RenderError(2, fmt::format("--frames-dir '{}': must be a plain folder name (letters, digits, '_', '-', "
                                      "'.'; not '.' or '..'), made inside the run folder",
                                      o.frames_name));
-  if (const std::string refusal = run_file_refusal("--frames-dir", o.dir / o.frames_name); !refusal.empty())
-    throw RenderError(2, refusal);
+  const std::string refusal = run_file_refusal("--frames-dir " + o.frames_name, o.dir / o.frames_name);
+  if (!refusal.empty()) throw RenderError(2, refusal);
 }
 
 // The coloring from --color.
@@ -170,6 +170,8 @@ auto reading(const fs::path& h5, F&& f) {
     throw RenderError(1, fmt::format("out of memory reading {}", h5.string()));
   } catch (const RenderError&) {
     throw;
+  } catch (const SnapshotFormatError& e) {
+    throw RenderError(2, fmt::format("{} is not a snapshot file this orogen reads: {}", h5.string(), e.what()));
   } catch (const std::exception& e) {
     throw RenderError(1, fmt::format("{} is not a readable orogen snapshot file: {}", h5.string(), e.what()));
   }

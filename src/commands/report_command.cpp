@@ -26,7 +26,7 @@ std::string input_error(const ReportOptions& o) {
     return o.dir.string() + ": not a folder (give the folder that holds the runs, sweeps and ensembles)";
   if (!o.out.empty() && fs::exists(o.out, ec) && !fs::is_directory(o.out, ec))
     return "--out " + o.out.string() + ": a file is there, not a folder";
-  if (!o.out.empty()) return run_file_refusal("--out", o.out);
+  if (!o.out.empty()) return run_file_refusal("--out " + o.out.string(), o.out);
   return "";
 }
 

@@ -146,14 +146,16 @@ int analyze(const AnalyzeOptions& options) {
   if (!fs::is_regular_file(index) || !fs::is_regular_file(config_path))
     throw AnalyzeError(2, fmt::format("{} is not a run folder (no {}); analyze takes the folder of a wedge run",
                                       dir.string(), fs::is_regular_file(index) ? "config.toml" : "snapshots.h5"));
-  // One analysis at a time writes a folder (a running run may write its outputs meanwhile:
+  // One analysis at a time writes a folder: it locks the folder itself (flock, nothing
+  // written; a running run holds its run.lock and writes its outputs meanwhile, of which
   // analyze reads only the complete ones); then the temporary files of a killed call go.
-  FileLock lock(dir / "analysis.lock");
+  FileLock lock(dir, FileLock::On::Folder);
   if (lock.open_error() != 0)
-    throw AnalyzeError(1, fmt::format("cannot write in {}: {}", dir.string(), std::strerror(lock.open_error())));
+    throw AnalyzeError(1, fmt::format("cannot open {}: {}", dir.string(), std::strerror(lock.open_error())));
   if (!lock.locked())
-    throw AnalyzeError(2, fmt::format("{} is being analysed by another orogen process (it holds {}); wait for it to end",
-                                      dir.string(), lock.path().string()));
+    throw AnalyzeError(2, fmt::format("{} is being analysed by another orogen process (it holds a lock on the folder); "
+                                      "wait for it to end",
+                                      dir.string()));
   remove_own_temporary_files(dir);
   std::optional<Config> config;
   try {
@@ -184,6 +186,8 @@ int analyze(const AnalyzeOptions& options) {
   std::optional<SnapshotReader> reader;
   try {
     reader.emplace(index);
+  } catch (const SnapshotFormatError& e) {
+    throw AnalyzeError(2, fmt::format("{} is not a snapshot file this orogen reads: {}", index.string(), e.what()));
   } catch (const std::exception& e) {
     throw AnalyzeError(1, fmt::format("{} is not a readable orogen snapshot file: {}", index.string(), e.what()));
   }

@@ -8,8 +8,9 @@
 
 namespace orogen {
 
-FileLock::FileLock(std::filesystem::path path) : path_(std::move(path)) {
-  const int fd = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+FileLock::FileLock(std::filesystem::path path, On on) : path_(std::move(path)) {
+  const int flags = on == On::Folder ? O_RDONLY | O_DIRECTORY | O_CLOEXEC : O_RDWR | O_CREAT | O_CLOEXEC;
+  const int fd = ::open(path_.c_str(), flags, 0644);
   if (fd < 0) {
     open_error_ = errno;
     return;

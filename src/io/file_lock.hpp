@@ -7,8 +7,11 @@ namespace orogen {
 
 class FileLock {
  public:
-  // Opens (creating) `path` and takes the lock without waiting: see locked() and open_error().
-  explicit FileLock(std::filesystem::path path);
+  // File: a lock file, created if missing. Folder: the folder itself (nothing is written, so
+  // a command that reads a folder can hold it without leaving a trace).
+  enum class On { File, Folder };
+  // Opens `path` and takes the lock without waiting: see locked() and open_error().
+  explicit FileLock(std::filesystem::path path, On on = On::File);
   ~FileLock();
   FileLock(const FileLock&) = delete;
   FileLock& operator=(const FileLock&) = delete;
@@ -19,7 +22,8 @@ class FileLock {
   int open_error() const { return open_error_; }
   const std::filesystem::path& path() const { return path_; }
 
-  // Drops the lock and removes the lock file (a command that leaves nothing behind).
+  // Drops the lock and removes the lock file (a command that leaves nothing behind; not for
+  // a folder).
   void release_and_remove();
 
  private:

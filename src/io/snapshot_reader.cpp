@@ -16,10 +16,10 @@ SnapshotReader::SnapshotReader(const std::filesystem::path& path)
     : path_(path), file_(h5::File::open(path, h5::File::Mode::ReadOnly)) {
   const hid_t root = file_.id();
   if (!h5::has_attr(root, "format") || h5::get_attr_string(root, "format") != kSnapshotFormat)
-    throw h5::Error("'" + path.string() + "' is not an orogen snapshot file");
+    throw SnapshotFormatError("'" + path.string() + "' is not an orogen snapshot file");
   const std::int64_t version = h5::get_attr_int64(root, "version");
   if (version != kSnapshotVersion)
-    throw h5::Error(fmt::format("'{}' has snapshot format version {}, this build reads {}", path.string(), version,
+    throw SnapshotFormatError(fmt::format("'{}' has snapshot format version {}, this build reads {}", path.string(), version,
                                 kSnapshotVersion));
   count_ = h5::get_attr_int64(root, "n_outputs");
   meta_ = read_snapshot_metadata(path);

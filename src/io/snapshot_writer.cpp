@@ -95,10 +95,10 @@ void write_group(hid_t group, const SnapshotFrame& f, h5::WriteOptions storage) 
 
 std::int64_t read_count(hid_t file, const std::filesystem::path& path) {
   if (!h5::has_attr(file, "format") || h5::get_attr_string(file, "format") != kSnapshotFormat)
-    throw h5::Error("'" + path.string() + "' is not an orogen snapshot file");
+    throw SnapshotFormatError("'" + path.string() + "' is not an orogen snapshot file");
   const std::int64_t version = h5::get_attr_int64(file, "version");
   if (version != kSnapshotVersion)
-    throw h5::Error(fmt::format("'{}' has snapshot format version {}, this build reads {}", path.string(), version,
+    throw SnapshotFormatError(fmt::format("'{}' has snapshot format version {}, this build reads {}", path.string(), version,
                                 kSnapshotVersion));
   return h5::get_attr_int64(file, "n_outputs");
 }

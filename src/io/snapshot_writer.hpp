@@ -43,6 +43,12 @@ inline constexpr const char* kSnapshotFormat = "orogen-snapshots";
 inline constexpr std::int64_t kSnapshotVersion = 1;
 inline constexpr const char* kConfigAttr = "config_toml";
 
+// A readable HDF5 file that is not an orogen snapshot file, or one of another format version:
+// the wrong file given (exit 2), where other h5::Errors are a damaged file (exit 1).
+struct SnapshotFormatError : h5::Error {
+  using h5::Error::Error;
+};
+
 // The per-disc arrays of Discs that a snapshot stores (forces and internals are left out).
 inline constexpr std::array<const char*, 13> kSnapshotDiscArrays = {
     "x", "y", "theta", "vx", "vy", "omega", "radius", "id", "cluster_id", "motion", "x0", "y0", "depth0"};

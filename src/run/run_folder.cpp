@@ -35,6 +35,10 @@ bool is_temporary(const fs::path& p) { return p.filename().string().find(".tmp-"
 bool create_folder(const fs::path& dir) {
   std::error_code ec;
   const bool created = fs::create_directories(dir, ec);
+  // A file where the folder (or one above it) should be is the user's to move: bad input.
+  if (ec == std::errc::not_a_directory || ec == std::errc::file_exists)
+    throw RunFolderError(fmt::format("cannot create the run folder {}: {} (a file is in the way)", dir.string(),
+                                     ec.message()));
   if (ec) throw RunFolderIoError(fmt::format("cannot create the run folder {}: {}", dir.string(), ec.message()));
   return created;
 }
@@ -89,11 +93,11 @@ std::string run_file_refusal(std::string_view option, const fs::path& target) {
   const auto at = run_file_at(target);
   if (!at) return "";
   if (at->name.empty())
-    return fmt::format("{} {}: that is the folder of a run; give a file or folder outside the run's own files",
-                       option, target.string());
-  return fmt::format("{} {}: {} belongs to the run in {}, which only that run (and orogen analyze, for its analysis "
+    return fmt::format("{}: that is the folder of the run in {}; give a path outside the run's own files", option,
+                       at->run.string());
+  return fmt::format("{}: {} belongs to the run in {}, which only that run (and orogen analyze, for its analysis "
                      "files) may write; give a path outside the run's own files",
-                     option, target.string(), at->name, at->run.string());
+                     option, at->name, at->run.string());
 }
 
 int remove_temporary_files(const fs::path& dir) {

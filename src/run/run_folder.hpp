@@ -64,7 +64,8 @@ struct RunFileAt {
 // files (what the run writes, config.toml, run.lock, and analyze's analysis* files), which no
 // other command may write over; nullopt otherwise.
 std::optional<RunFileAt> run_file_at(const std::filesystem::path& target);
-// "--to RUN/series.csv is a file of the run in RUN: ..." for a refusal, or "".
+// "--to RUN/series.csv: series.csv belongs to the run in RUN, ..." for a refusal of `target`,
+// `option` the option as the user gave it ("--to RUN/series.csv"); "" when target is free.
 std::string run_file_refusal(std::string_view option, const std::filesystem::path& target);
 
 // Removes the temporary files (*.tmp-PID) a killed write left in DIR, DIR/vtp and

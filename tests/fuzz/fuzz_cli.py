@@ -443,10 +443,13 @@ def omp_case(rng, case):
     good = {"OMP_NUM_THREADS": ["1", "2", "2,1", " 2 "], "OMP_PROC_BIND": ["true", "close", "spread,close"],
             "OMP_WAIT_POLICY": ["passive", "ACTIVE"], "OMP_DYNAMIC": ["false", "TRUE"],
             "OMP_STACKSIZE": ["8M", "512k", "1048576"], "OMP_THREAD_LIMIT": ["4"], "GOMP_SPINCOUNT": ["0", "10k", "infinite"]}
-    bad = ["100000", "60000", "1025", "20000", "abc", "0", "-1", "1e3", "1.5", "", "2,,1", "2,0", "sideways", "x"]
-    value = rng.choice(good[name] + bad)
+    bad = {"OMP_NUM_THREADS": ["100000", "60000", "1025", "20000", "abc", "0", "-1", "1e3", "1.5", "", "2,,1", "2,0"],
+           "OMP_PROC_BIND": ["sideways", "x", "", "1"], "OMP_WAIT_POLICY": ["lazy", "", "1"],
+           "OMP_DYNAMIC": ["x", "-1", "", "yes"], "OMP_STACKSIZE": ["big", "-1", "", "1.5M", "8X"],
+           "OMP_THREAD_LIMIT": ["0", "-1", "abc", ""], "GOMP_SPINCOUNT": ["abc", "-1", "", "1.5"]}
+    value = rng.choice(good[name] + bad[name])
     case.env = {name: value}
-    if value not in good[name]:
+    if value in bad[name]:
         case.expect = 2
     case.argv = ["run", "--set", "run.experiment=packing"] + [a for k, v in TINY.items() if k != "run.threads"
                                                               for a in ("--set", k + "=" + v)] + ["--out", "out"]
