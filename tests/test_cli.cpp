@@ -749,6 +749,28 @@ TEST_F(Cli, SigintAndSigtermStopAtAStepWithACheckpointAndResumeBitForBit) {
   }
 }
 
+// Issue 36: a signal during the set-up (seconds to minutes of settling) stops the run cleanly,
+// saying so, and leaves a folder that --resume starts again from its set-up.
+TEST_F(Cli, ASignalDuringTheSetUpStopsCleanlyAndTheRunResumesFromItsSetUp) {
+  const std::string small =
+      " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
+      " --set wedge.s_end=0.1 --set wedge.outputs=2 --set output.progress=never --threads 1";
+  const fs::path whole = dir_ / "whole", run = dir_ / "run";
+  ASSERT_EQ(orogen_cli("run --out '" + whole.string() + "'" + small, dir_).status, 0);
+  // run.log is opened just before the set-up starts.
+  const int status = signal_when_written(small + " --out '" + run.string() + "'", run / "run.log", SIGTERM,
+                                         dir_ / "stopped.err");
+  EXPECT_EQ(status, 128 + SIGTERM) << slurp(dir_ / "stopped.err");
+  const std::string log = slurp(run / "run.log");
+  EXPECT_NE(log.find("set-up: building the initial state"), std::string::npos) << log;
+  EXPECT_NE(log.find("stopped by SIGTERM during the set-up"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(run / "checkpoint.bin"));
+  const auto resumed = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  expect_same_run(whole, run);
+  EXPECT_NE(slurp(run / "run.log").find("set-up done in"), std::string::npos);
+}
+
 TEST_F(Cli, AFinishedWedgeExtendedWithResumeEqualsOneRunToTheNewEnd) {
   const std::string small =
       " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"

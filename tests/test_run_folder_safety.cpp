@@ -33,7 +33,7 @@ const std::string kPacking =
 
 // A wedge short enough for a test (a few seconds), with outputs the analysis can read.
 const std::string kWedge =
-    "--set wedge.s_end=0.2 --set wedge.outputs=4 --set layer.length=30 --set output.progress=never --threads 1";
+    "--set wedge.s_end=0.1 --set wedge.outputs=3 --set layer.length=30 --set output.progress=never --threads 1";
 
 class RunFolderSafety : public orogen::testing::TempDirTest {
  protected:

@@ -24,16 +24,18 @@ import orogen
 
 
 class ForelandRecycling:
-    """The hook: erosion above `height` (d), deposition of discs of radius `radius` (d) spread
-    over [x_lo, x_hi] (d), dropped just above the surface there."""
+    """The hook: erosion above `height` (h0), deposition of discs of radius `radius` (d) spread
+    over [x_lo, x_hi] (h0 from the S-point), dropped just above the surface there. The world's
+    coordinates are in d: the hook scales by the run's h0 (world.h0)."""
 
     def __init__(self, height, x_lo, x_hi, radius):
-        self.height, self.x_lo, self.x_hi, self.radius = height, x_lo, x_hi, radius
+        self.height_h0, self.x_lo_h0, self.x_hi_h0, self.radius = height, x_lo, x_hi, radius
         self.pending = 0.0  # eroded area not yet deposited [d^2]
         self.slot = 0       # next deposition column, cycling over the foreland
         self.eroded = self.deposited = 0.0
 
     def __call__(self, world):
+        self.height, self.x_lo, self.x_hi = (v * world.h0 for v in (self.height_h0, self.x_lo_h0, self.x_hi_h0))
         area = lambda: float(np.sum(np.pi * world.radius ** 2))
         before = area()
         if world.remove_above(self.height, "eroded"):
@@ -67,8 +69,7 @@ def main(argv=None):
                             "outputs": 3, "erosion_height": 0.0}}
         args.erosion = min(args.erosion, 0.9)  # the tiny wedge barely rises
     orogen.load_config(config)  # checked before anything runs
-    h0 = float(config["layer"]["thickness"]) if "layer" in config else 10.0  # layer.thickness's default
-    rule = ForelandRecycling(height=args.erosion * h0, x_lo=-4.0 * h0, x_hi=-2.0 * h0, radius=0.5)
+    rule = ForelandRecycling(height=args.erosion, x_lo=-4.0, x_hi=-2.0, radius=0.5)
     orogen.run(config, out=args.out, hook=rule, every=args.every)
     r = orogen.open_run(args.out)
     print(f"{args.out}: eroded {rule.eroded:.4g} d^2, deposited {rule.deposited:.4g} d^2 in the foreland; "

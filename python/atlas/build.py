@@ -78,6 +78,9 @@ def build(root, site, log=print):
     write_text(os.path.join(site, manifest.NAME), json.dumps(new, indent=0, allow_nan=False))
     log("atlas: %d runs (%d pages rebuilt), %d sweeps/ensembles, in %.1f s: %s"
         % (len(infos), rebuilt, len(groups), time.monotonic() - t0, os.path.join(site, "index.html")))
+    if not runs:
+        log("atlas: no run folder under %s (a run folder holds config.toml beside series.csv or snapshots.h5; "
+            "symbolic links to folders are followed)" % root)
     return 0
 
 

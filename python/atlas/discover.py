@@ -20,11 +20,18 @@ def is_ensemble(names):
 
 def find(root, site):
     """(runs, groups): runs [(abs path, rel path, group rel path or '')], groups [(abs, rel, kind)]
-    with kind 'sweep' or 'ensemble'; in sorted order; the site folder itself skipped."""
+    with kind 'sweep' or 'ensemble'; in sorted order; the site folder itself skipped. Symbolic
+    links to folders are followed (a folder of linked runs), each real folder once."""
     root = os.path.abspath(root)
     site = os.path.abspath(site)
     runs, groups, group_of_parent = [], [], {}
-    for here, dirs, files in os.walk(root):
+    seen = set()  # real paths walked: symbolic links are followed, each folder once (no cycles)
+    for here, dirs, files in os.walk(root, followlinks=True):
+        real = os.path.realpath(here)
+        if real in seen:
+            dirs[:] = []
+            continue
+        seen.add(real)
         names = set(dirs) | set(files)
         if os.path.abspath(here) == site or {"manifest.json", "index.html", "assets"} <= names:
             dirs[:] = []  # an atlas (this one or another): its copies of run files are not runs

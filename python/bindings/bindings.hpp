@@ -5,6 +5,7 @@
 
 #include <memory>
 
+#include "config/config.hpp"
 #include "experiments/experiment.hpp"
 #include "world/world.hpp"
 
@@ -19,6 +20,7 @@ struct WorldHandle {
   World* world = nullptr;
   const Experiment* experiment = nullptr;
   pyb::object owner;
+  const Config* config = nullptr;  // the run's resolved configuration (world.config, world.h0)
 
   World& get() const;
 };

@@ -22,8 +22,8 @@ struct RunResult {
 
 // Calls fn(world) with a handle valid during the call only; a kept handle must not outlive it.
 template <class Fn>
-auto call_with_world(Fn&& fn, World& w, const Experiment& e) {
-  pyb::object handle = pyb::cast(WorldHandle{&w, &e, pyb::none()});
+auto call_with_world(Fn&& fn, World& w, const Experiment& e, const Config& c) {
+  pyb::object handle = pyb::cast(WorldHandle{&w, &e, pyb::none(), &c});
   struct Clear {
     pyb::object& h;
     ~Clear() { h.cast<WorldHandle&>().world = nullptr; }
@@ -44,10 +44,10 @@ RunResult run(std::optional<std::filesystem::path> config, std::vector<std::stri
   RunResult result;
   if (!hook.is_none()) {
     opt.between_every = every;
-    opt.between_steps = [&hook, &result](World& w, const Experiment& e) {
+    opt.between_steps = [&hook, &result](World& w, const Experiment& e, const Config& c) {
       pyb::gil_scoped_acquire gil;
       try {
-        return call_with_world([&hook](pyb::object h) { return bool(pyb::bool_(hook(h))); }, w, e);
+        return call_with_world([&hook](pyb::object h) { return bool(pyb::bool_(hook(h))); }, w, e, c);
       } catch (pyb::error_already_set& err) {
         result.error = std::move(err);  // stop with a checkpoint, re-raised in Python
         return true;
@@ -55,10 +55,10 @@ RunResult run(std::optional<std::filesystem::path> config, std::vector<std::stri
     };
   }
   if (!setup.is_none()) {
-    opt.before_first_output = [&setup, &result](World& w, const Experiment& e) {
+    opt.before_first_output = [&setup, &result](World& w, const Experiment& e, const Config& c) {
       pyb::gil_scoped_acquire gil;
       try {
-        call_with_world([&setup](pyb::object h) { setup(h); }, w, e);
+        call_with_world([&setup](pyb::object h) { setup(h); }, w, e, c);
       } catch (pyb::error_already_set& err) {
         const std::string what = err.what();
         result.error = std::move(err);  // re-raised in Python; the folder is released as after any failed set-up

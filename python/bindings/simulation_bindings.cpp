@@ -4,33 +4,57 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <omp.h>
+
+#include <chrono>
 #include <filesystem>
 
 #include "bindings.hpp"
 #include "config/config.hpp"
 #include "experiments/time_step_config.hpp"
 #include "io/binary_archive.hpp"
+#include "util/thread_tuner.hpp"
 #include "world/world_archive.hpp"
 
 namespace orogen::py {
 namespace {
 
+// The team a run of this configuration steps with, as `orogen run` sets it: run.threads, or
+// every core for 0.
+int team_size(const Config& c) {
+  if (const int threads = c.get_int32("run.threads"); threads > 0) omp_set_num_threads(threads);
+  return omp_get_max_threads();
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
 class Simulation {
  public:
   explicit Simulation(Config config)
-      : config_((check_environment(), std::move(config))), exp_(make_experiment(config_)) {
+      : config_((check_environment(), std::move(config))), exp_(make_experiment(config_)),
+        tuner_(config_.get_bool("run.adapt_threads") ? team_size(config_) : 1, config_.get_float("run.adapt_slice")) {
     apply_engine_config(config_, world_);
     exp_->setup(world_);
+    start_ = left_ = std::chrono::steady_clock::now();  // the set-up is not timed
   }
 
-  // Up to n steps; fewer once the experiment is done. The GIL is released while stepping.
+  // Up to n steps; fewer once the experiment is done. The GIL is released while stepping. The
+  // thread count is tuned as the CLI's run loop tunes it (util/thread_tuner.hpp): on a busy
+  // machine one thread can be many times faster than a spinning team; results do not depend on it.
   std::uint64_t step(std::uint64_t n) {
     pyb::gil_scoped_release free;
+    tuner_.exclude(seconds_since(left_));  // Python's time between calls is not stepping
     std::uint64_t k = 0;
     while (k < n && !done_) {
       if (exp_->advance(world_)) ++k;
       else done_ = true;
+      const int threads = tuner_.threads();
+      if (tuner_.after_step(static_cast<double>(world_.discs.size()), seconds_since(start_)) != threads)
+        omp_set_num_threads(tuner_.threads());
     }
+    left_ = std::chrono::steady_clock::now();
     return k;
   }
 
@@ -80,6 +104,8 @@ class Simulation {
   std::unique_ptr<Experiment> exp_;
   World world_;
   bool done_ = false;
+  ThreadTuner tuner_;
+  std::chrono::steady_clock::time_point start_, left_;  // the tuner's clock; when step() last returned
 };
 
 }  // namespace
@@ -97,7 +123,7 @@ void bind_simulation(pyb::module_& m) {
       .def_property_readonly("config_toml", [](const Simulation& s) { return s.config().to_toml(); })
       .def_property_readonly("world", [](pyb::object self) {
         auto& s = self.cast<Simulation&>();
-        return WorldHandle{&s.world(), &s.experiment(), self};
+        return WorldHandle{&s.world(), &s.experiment(), self, &s.config()};
       });
 }
 

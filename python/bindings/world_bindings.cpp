@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -86,6 +87,19 @@ void set_motion(World& w, const std::vector<std::size_t>& idx, Motion m, double 
 void bind_world(pyb::module_& m) {
   pyb::class_<WorldHandle>(m, "World")
       .def_property_readonly("step", [](const WorldHandle& h) { return h.get().step; })
+      // The layer thickness h0 [d] (a wedge's unit of length) and the resolved configuration as
+      // a nested dict ({"wedge": {"s_end": 8.0, ...}}), as the run's config.toml holds them.
+      .def_property_readonly("h0",
+                             [](const WorldHandle& h) {
+                               h.get();  // a stale handle raises
+                               return h.experiment ? h.experiment->h0() : std::numeric_limits<double>::quiet_NaN();
+                             })
+      .def_property_readonly("config",
+                             [](const WorldHandle& h) -> pyb::object {
+                               h.get();
+                               if (h.config == nullptr) return pyb::none();
+                               return pyb::module_::import("tomllib").attr("loads")(h.config->to_toml());
+                             })
       .def_property_readonly("time", [](const WorldHandle& h) { return h.get().time; })
       .def_property_readonly("dt", [](const WorldHandle& h) { return h.get().dt; })
       .def_property_readonly("n_clusters", [](const WorldHandle& h) { return h.get().clusters.size(); })

@@ -26,13 +26,16 @@ from .config import load_config, overrides, split
 
 
 class RunError(RuntimeError):
-    """`orogen run` ended with a non-zero exit code (the message and run.log say why)."""
+    """`orogen run` ended with a non-zero exit code (docs/exit-codes.md); the message says why,
+    or where the reason was printed."""
 
-    def __init__(self, code, out):
+    def __init__(self, code, out, why=None):
         self.code = code
         reasons = {1: "an I/O failure", 2: "bad input (folder or configuration)", 3: "the simulation became unstable"}
-        super().__init__(f"orogen run in {out} ended with exit code {code} "
-                         f"({reasons.get(code, 'see run.log')}); see {Path(out) / 'run.log'}")
+        where = ("the reason is printed above (standard error)" if code == 2 else
+                 f"the reason is printed above and in {Path(out) / 'run.log'}")
+        super().__init__(why or f"orogen run in {out} ended with exit code {code} "
+                                f"({reasons.get(code, 'see docs/exit-codes.md')}); {where}")
 
 
 STOPPED = "stopped"    # the hook returned True: a checkpoint to resume from
@@ -57,12 +60,23 @@ def run(config=None, out="out", set=None, hook=None, every=100, threads=None, fr
     hook or setup raised (a hook's run checkpointed there; a setup's folder is left empty)."""
     file, settings = split(config)
     # ConfigErrors here, as Python exceptions, before any file: the keys, then the experiment's
-    # cross-key checks (a scripted run without scripted.duration).
-    load_config(config, set).check_experiment()
+    # cross-key checks (a scripted run without scripted.duration). A branch without a
+    # configuration continues its source's, as the CLI's does.
+    load_config(_branch_source_config(from_run) if config is None and from_run else config, set).check_experiment()
+    if (Path(out) / "config.toml").exists():
+        raise RunError(2, out, f"{out} already holds a run: continue it with orogen.resume({str(out)!r}), "
+                               "or give another out")
     args = overrides(settings) + overrides(set)
     code = _orogen.run(file, args, Path(out), -1 if threads is None else int(threads), False,
                        from_run or "", hook, int(every) if hook else 0, setup)
     return _result(code, out)
+
+
+def _branch_source_config(from_run):
+    """The config.toml of the run that "RUN[:OUTPUT]" names (a folder may itself hold ':')."""
+    text = str(from_run)
+    head, colon, tail = text.rpartition(":")
+    return Path(head if colon and tail.isdigit() else text) / "config.toml"
 
 
 def resume(out, set=None, hook=None, every=100, threads=None, setup=None):

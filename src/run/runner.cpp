@@ -32,8 +32,10 @@
 #include "run/progress.hpp"
 #include "run/removal_log.hpp"
 #include "run/run_folder.hpp"
+#include "run/setup_report.hpp"
 #include "run/status_line_sink.hpp"
 #include "run/stop_signals.hpp"
+#include "util/run_control.hpp"
 #include "util/thread_tuner.hpp"
 #include "world/world_archive.hpp"
 
@@ -55,6 +57,8 @@ struct RunState {
   std::vector<std::uint64_t> vtp_digests;
   bool finished = false;
 };
+
+const char* signal_name(int sig) { return sig == SIGINT ? "SIGINT" : "SIGTERM"; }
 
 ContactOutputOptions contact_output_options(const Config& config) {
   ContactOutputOptions o{config.get_bool("output.contacts"), config.get_bool("output.stress"),
@@ -98,7 +102,7 @@ class Run {
   // The user's additions to the set-up (RunOptions::before_first_output), then the check that
   // the time step still suits the discs they made: still nothing is written.
   void build_on_setup(const BeforeFirstOutput& fn) {
-    fn(world_, *exp_);
+    fn(world_, *exp_, config_);
     check_world_time_step(config_, world_);
   }
 
@@ -166,7 +170,7 @@ class Run {
     while (exp_->advance(world_)) {
       // A scripted rule acts after its step and before that step's output, so outputs show it.
       const bool hook_stop =
-          between_every_ > 0 && world_.step % between_every_ == 0 && between_(world_, *exp_);
+          between_every_ > 0 && world_.step % between_every_ == 0 && between_(world_, *exp_, config_);
       const auto work = static_cast<double>(world_.discs.size());
       particle_steps += work;
       const int threads = tuner.threads();
@@ -195,7 +199,7 @@ class Run {
         checkpoint();
         log().info("stopped by {} at step {} (t = {:.6g}) after output {}, with a checkpoint; continue with orogen run "
                    "--resume {}",
-                   sig == SIGINT ? "SIGINT" : "SIGTERM", world_.step, world_.time, state_.outputs - 1, dir_.string());
+                   signal_name(sig), world_.step, world_.time, state_.outputs - 1, dir_.string());
         return sig;
       }
     }
@@ -225,7 +229,9 @@ class Run {
       last_output_step_ = world_.step;
     };
     output();
+    const auto t0 = std::chrono::steady_clock::now();
     while (state_.outputs <= k) {
+      run_control::between_steps(world_.step, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       if (!exp_->advance(world_)) {
         if (world_.step != last_output_step_) output();  // a run's last output comes at its end
         break;
@@ -530,8 +536,10 @@ void build_branch(Run& run, const BranchSource& source, const fs::path& out) {
 // Undoes claim_for_new_run after a set-up that failed (bad input, unstable set-up): nothing
 // of the run is left behind.
 void release_new_run(const RunOptions& opt, RunFolderLock& lock) {
+  spdlog::drop("orogen");  // run.log is closed once the last logger holding it goes
   std::error_code ec;
   fs::remove(opt.out / "config.toml", ec);
+  fs::remove(opt.out / "run.log", ec);
   lock.abandon();
 }
 
@@ -606,13 +614,13 @@ int run_command(const RunOptions& opt) {
     const ResumeOverrides resume = opt.resume ? resume_overrides(opt) : ResumeOverrides{};
     std::vector<std::string> resume_all = resume.extending;
     resume_all.insert(resume_all.end(), resume.display.begin(), resume.display.end());
-    const Config config =
-        opt.resume ? Config::load(opt.out / "config.toml", resume_all) : Config::load(opt.config, opt.overrides);
     std::optional<BranchSource> source;
-    if (!opt.from.empty()) {
-      source = find_branch_source(opt.from);
-      check_branch_config(config, *source);
-    }
+    if (!opt.from.empty()) source = find_branch_source(opt.from);
+    // A branch without a configuration file continues its source's configuration (with --set).
+    const std::optional<fs::path> config_file = opt.config || !source ? opt.config : source->dir / "config.toml";
+    const Config config =
+        opt.resume ? Config::load(opt.out / "config.toml", resume_all) : Config::load(config_file, opt.overrides);
+    if (source) check_branch_config(config, *source);
     if (!opt.resume && fs::exists(opt.out / "config.toml"))
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
@@ -629,6 +637,8 @@ int run_command(const RunOptions& opt) {
                        "cannot give; from the command line, choose another experiment, or branch a scripted run "
                        "with --from");
 
+    // Installed before the set-up, which can take minutes: a stop there ends the run cleanly.
+    const StopSignals stop_signals;
     RunFolderLock lock(opt.out);
     // A resume without a checkpoint (killed during set-up) starts the run again from its set-up.
     const bool from_checkpoint = opt.resume && fs::exists(opt.out / "checkpoint.bin");
@@ -652,25 +662,6 @@ int run_command(const RunOptions& opt) {
     if (from_checkpoint) {
       run.load_checkpoint(!extending.empty());
       stale = remove_temporary_files(opt.out);
-    } else {
-      try {
-        if (source) {
-          build_branch(run, *source, opt.out);
-        } else {
-          run.setup();
-          if (opt.before_first_output) run.build_on_setup(opt.before_first_output);
-          else if (run.world().discs.size() == 0)
-            throw UsageError("the set-up made no discs, so the run could only run empty; make the layer larger "
-                             "(layer.length, layer.thickness)");
-        }
-      } catch (const InstabilityError& e) {
-        if (!opt.resume) release_new_run(opt, lock);
-        std::cerr << "error: the set-up became unstable: " << e.what() << "\n";
-        return 3;
-      } catch (...) {
-        if (!opt.resume) release_new_run(opt, lock);
-        throw;
-      }
     }
     auto console = std::make_shared<StatusLineSink>(stderr);
     auto logger = make_logger(opt.out, console);
@@ -680,6 +671,37 @@ int run_command(const RunOptions& opt) {
                  opt.out.string(), omp_get_max_threads());
     for (const auto& warning : config_warnings(config)) logger->warn("{}", warning);
     if (stale > 0) logger->info("removed {} temporary file(s) left by a killed write", stale);
+    Progress progress(progress_mode(config), console);
+    if (!from_checkpoint) {
+      try {
+        const SetupReport report(*logger, *console, progress, source.has_value());
+        if (source) {
+          build_branch(run, *source, opt.out);
+        } else {
+          run.setup();
+          if (opt.before_first_output) run.build_on_setup(opt.before_first_output);
+          else if (run.world().discs.size() == 0)
+            throw UsageError("the set-up made no discs, so the run could only run empty; make the layer larger "
+                             "(layer.length, layer.thickness)");
+        }
+      } catch (const run_control::Stopped& stop) {
+        // A new run keeps its config.toml, as after a kill during the set-up: --resume starts it
+        // again. A branch cannot be resumed before its first checkpoint: its folder goes.
+        const bool keep = !source;
+        logger->info("stopped by {} during the set-up, before output 0{}", signal_name(stop.signal),
+                     keep ? fmt::format("; orogen run --resume {} starts it again", opt.out.string())
+                          : "; the branch's folder is removed");
+        if (!keep) release_new_run(opt, lock);
+        return 128 + stop.signal;
+      } catch (const InstabilityError& e) {
+        if (!opt.resume) release_new_run(opt, lock);
+        std::cerr << "error: the set-up became unstable: " << e.what() << "\n";
+        return 3;
+      } catch (...) {
+        if (!opt.resume) release_new_run(opt, lock);
+        throw;
+      }
+    }
     if (source)
       logger->info("branch of {} at output {} (step {}, t = {:.6g}), its state {}", source->dir.string(), source->output,
                    run.world().step, run.world().time,
@@ -701,8 +723,6 @@ int run_command(const RunOptions& opt) {
     started = true;
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
                  run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
-    Progress progress(progress_mode(config), console);
-    const StopSignals stop_signals;
     try {
       if (const int sig = run.loop(progress); sig != 0) return sig < 0 ? kStoppedByHook : 128 + sig;
     } catch (const InstabilityError& e) {

@@ -12,16 +12,18 @@ namespace orogen {
 
 struct World;
 class Experiment;
+class Config;
 
 // A rule called between steps (the Python package's hooks, python/orogen): it may read and
 // change the world through its API; returning true stops the run like SIGTERM, with a checkpoint.
-using BetweenSteps = std::function<bool(World&, const Experiment&)>;
+// The Config is the run's resolved configuration (what config.toml holds).
+using BetweenSteps = std::function<bool(World&, const Experiment&, const Config&)>;
 
 // A function that builds on the world of a run that starts from its set-up (the Python
 // package's `setup`, the geometry of a scripted experiment): called once after the
 // experiment's setup and before output 0. Never on a resume from a checkpoint (that holds what
 // it built) nor for a branch (its state is the source's).
-using BeforeFirstOutput = std::function<void(World&, const Experiment&)>;
+using BeforeFirstOutput = std::function<void(World&, const Experiment&, const Config&)>;
 
 struct RunOptions {
   std::optional<std::filesystem::path> config;  // none: the built-in default
@@ -39,9 +41,10 @@ struct RunOptions {
 // run_command's exit code when between_steps asked the run to stop (it can be resumed).
 inline constexpr int kStoppedByHook = 4;
 
-// Exit codes: 0 done, 1 I/O failure (a full disk, an unwritable file), 2 bad input
-// (configuration, folder), 3 the simulation became unstable, 128 + signal when SIGINT or
-// SIGTERM stopped it (with a checkpoint to resume from).
+// Exit codes (docs/exit-codes.md, one table for every command): 0 done, 1 I/O (a full or
+// read-only disk, a damaged file), 2 bad input (configuration, options, a folder that is not
+// this run's or mixes runs), 3 the simulation became unstable, 4 stopped by between_steps,
+// 128 + signal when SIGINT or SIGTERM stopped it (with a checkpoint to resume from).
 int run_command(const RunOptions& options);
 
 }  // namespace orogen

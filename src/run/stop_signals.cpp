@@ -2,18 +2,20 @@
 
 #include <csignal>
 
+#include "util/run_control.hpp"
+
 namespace orogen {
 namespace {
 
-volatile std::sig_atomic_t g_received = 0;
 struct sigaction g_old_int, g_old_term;
 
-extern "C" void record_signal(int sig) { g_received = sig; }
+// Recorded where the run loop and the set-up's loops (util/run_control.hpp) both ask.
+extern "C" void record_signal(int sig) { run_control::record_stop(sig); }
 
 }  // namespace
 
 StopSignals::StopSignals() {
-  g_received = 0;
+  run_control::clear_stop();
   struct sigaction action {};
   action.sa_handler = record_signal;
   sigemptyset(&action.sa_mask);
@@ -25,8 +27,9 @@ StopSignals::StopSignals() {
 StopSignals::~StopSignals() {
   sigaction(SIGINT, &g_old_int, nullptr);
   sigaction(SIGTERM, &g_old_term, nullptr);
+  run_control::clear_stop();  // a later loop of this process is not stopped by this run's signal
 }
 
-int StopSignals::received() { return g_received; }
+int StopSignals::received() { return run_control::stop_signal(); }
 
 }  // namespace orogen

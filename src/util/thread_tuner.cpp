@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "util/run_control.hpp"
+
 namespace orogen {
 
 ThreadTuner::ThreadTuner(int max_threads, double slice, int probe_every)
@@ -79,8 +81,9 @@ void step_with_tuning(bool adapt, double slice, const std::function<bool()>& ste
   const TeamSizeGuard guard;
   ThreadTuner tuner(adapt ? guard.threads() : 1, slice);
   const auto t0 = std::chrono::steady_clock::now();
-  while (step()) {
+  for (std::uint64_t steps = 1; step(); ++steps) {
     const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    run_control::between_steps(steps, now);  // a stop asked for (SIGINT, SIGTERM), progress
     const int threads = tuner.threads();
     if (tuner.after_step(work(), now) != threads) omp_set_num_threads(tuner.threads());
   }

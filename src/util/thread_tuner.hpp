@@ -60,7 +60,9 @@ class ThreadTuner {
 // current size decides (none when `adapt` is false), as the run's main loop does; `work` gives
 // a step's particle-steps. For the settling loops of an experiment's set-up, which would
 // otherwise spin a whole team on a busy machine. The team size asked for before is restored
-// afterwards (also on an exception), so that the main loop tunes from the same start.
+// afterwards (also on an exception), so that the main loop tunes from the same start. After
+// each step it calls run_control::between_steps: a stop asked for by SIGINT or SIGTERM ends the
+// loop with run_control::Stopped, and the run driver hears how far the set-up is.
 void step_with_tuning(bool adapt, double slice, const std::function<bool()>& step,
                       const std::function<double()>& work);
 

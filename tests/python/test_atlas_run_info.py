@@ -1,12 +1,13 @@
 """What the atlas reads of a run folder without building a site: the status and wall time from
-run.log, for a run in one piece, a resumed run and a run still going."""
+run.log, for a run in one piece, a resumed run and a run still going; which folders are runs,
+symbolic links to them included."""
 import os
 import sys
 import tempfile
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
-from atlas import run_info  # noqa: E402
+from atlas import discover, run_info  # noqa: E402
 
 
 def status_and_wall(log_lines):
@@ -41,6 +42,23 @@ class WallTime(unittest.TestCase):
 
     def test_a_log_without_two_timestamps_has_no_wall_time(self):
         self.assertEqual(status_and_wall(["[2026-11-25 01:00:00] orogen 0.1.0 run in runs/a"]), ("incomplete", None))
+
+
+class Discovery(unittest.TestCase):
+    def test_symbolic_links_to_runs_are_followed_once_and_cycles_end(self):
+        # Issue 36: a folder of linked runs found "0 runs".
+        with tempfile.TemporaryDirectory() as d:
+            for run in ("store/a", "store/b"):
+                os.makedirs(os.path.join(d, run))
+                for name in ("config.toml", "series.csv"):
+                    open(os.path.join(d, run, name), "w").close()
+            linked = os.path.join(d, "linked")
+            os.makedirs(linked)
+            os.symlink(os.path.join(d, "store", "a"), os.path.join(linked, "a"))
+            os.symlink(os.path.join(d, "store", "b"), os.path.join(linked, "b"))
+            os.symlink(linked, os.path.join(linked, "loop"))  # a cycle
+            runs, _ = discover.find(linked, os.path.join(d, "site"))
+            self.assertEqual([rel for _, rel, _ in runs], ["a", "b"])
 
 
 if __name__ == "__main__":

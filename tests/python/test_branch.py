@@ -126,6 +126,17 @@ class BranchTest(unittest.TestCase):
         with open(os.path.join(killed, "config.toml")) as f:
             self.assertTrue(f.readline().startswith("# branch of %s:1" % self.source))
 
+    def test_a_branch_without_a_configuration_takes_its_sources(self):
+        # Issue 36: without CONFIG the branch is the one with the source's configuration (not the
+        # built-in default's), the same files bit for bit.
+        given, taken = self.path("given"), self.path("taken")
+        self.assertEqual(run(given, "--from", self.source + ":2", sets=["wedge.mu_bp=0.3"]).returncode, 0)
+        r = orogen("run", "--from", self.source + ":2", "--out", taken, "--set", "wedge.mu_bp=0.3")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for f in ("config.toml", "series.csv", "checkpoint.bin", "removals.csv"):
+            self.assertTrue(filecmp.cmp(os.path.join(given, f), os.path.join(taken, f), shallow=False), f)
+        self.assertEqual(n_outputs(taken), n_outputs(self.source) - 2)
+
     def test_bad_from_exit_2_naming_it(self):
         empty = self.path("empty")
         os.makedirs(empty, exist_ok=True)

@@ -132,3 +132,16 @@ def test_bad_openmp_variables_raise_config_error_before_anything_is_written(tmp_
             with pytest.raises(orogen.ConfigError, match=name):
                 orogen.Simulation(TINY_WEDGE)
     assert not (tmp_path / "r").exists()
+
+
+def test_a_run_into_a_folder_that_holds_one_names_the_python_call_that_continues_it(tmp_path):
+    """Issue 36: the refusal said "see run.log" (which does not mention it) and named the CLI's --resume."""
+    import pytest
+    out = tmp_path / "r"
+    assert orogen.run(TINY_WEDGE, out=out) == orogen.FINISHED
+    before = sorted(p.name for p in out.iterdir())
+    with pytest.raises(orogen.RunError) as refused:
+        orogen.run(TINY_WEDGE, out=out)
+    assert refused.value.code == 2
+    assert f"orogen.resume({str(out)!r})" in str(refused.value) and "run.log" not in str(refused.value)
+    assert sorted(p.name for p in out.iterdir()) == before

@@ -129,3 +129,16 @@ def test_simulation_hook_every(tmp_path):
     seen = []
     s.step(25, hook=lambda w: seen.append(w.step), every=10)
     assert seen == [10, 20] and s.world.step == 25
+
+
+def test_hooks_and_simulations_read_h0_and_the_resolved_configuration(tmp_path):
+    # Issue 36: a hook had no way to the run's h0 or configuration (the examples hard-coded h0).
+    seen = []
+    orogen.run(TINY_WEDGE, out=tmp_path / "r", every=100,
+               hook=lambda w: seen.append((w.h0, w.config["wedge"]["s_end"], w.config["layer"]["thickness"])))
+    thickness = TINY_WEDGE["layer"]["thickness"]
+    assert seen and seen[0] == (thickness, TINY_WEDGE["wedge"]["s_end"], thickness)
+    assert orogen.open_run(tmp_path / "r").config["layer"]["thickness"] == thickness
+    s = orogen.Simulation(TINY_WEDGE)
+    assert s.world.h0 == thickness and s.world.config["run"]["experiment"] == "wedge"
+    assert s.world.config["contact"]["kn"] == 10000.0  # every key, resolved: the defaults too
