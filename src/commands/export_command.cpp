@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 
+#include "config/config.hpp"
+#include "experiments/experiment.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot_export.hpp"
 #include "io/snapshot_reader.hpp"
@@ -41,6 +44,18 @@ Snapshot read_output(const ExportCommandOptions& o, std::int64_t& k) {
   return reader->read(k);
 }
 
+// The run's contact law and time step as LAMMPS's gran/hooke/history takes them: its dashpots
+// per unit effective mass, that of two discs of diameter 1 (mass pi/4 each, density 1).
+LammpsLaw lammps_law(const fs::path& run) {
+  Config config = Config::load(run / "config.toml", {});
+  World world;
+  apply_engine_config(config, world);
+  const ContactLaw& law = world.law;
+  const double m_eff = std::numbers::pi / 8;
+  const double gamma_n = law.gamma_n(m_eff, world.dt) / m_eff;
+  return {law.kn, law.ks, gamma_n, law.tangential_damping_ratio * gamma_n, law.mu, world.dt};
+}
+
 }  // namespace
 
 int export_command(const ExportCommandOptions& o) {
@@ -55,9 +70,17 @@ int export_command(const ExportCommandOptions& o) {
     } catch (const std::invalid_argument& e) {
       throw BadInput(e.what());
     }
+    const fs::path input = fs::path(o.to.string() + ".in");  // a LAMMPS data file's ready input
+    if (format == ExportFormat::LammpsData)
+      if (const std::string refusal = run_file_refusal("--to " + o.to.string() + " (its input " + input.string() + ")",
+                                                       input);
+          !refusal.empty())
+        throw BadInput(refusal);
     std::int64_t k = 0;
     const Snapshot s = read_output(o, k);
     write_file_atomically(o.to, export_snapshot(s, format, {o.dir.string(), k}));
+    if (format == ExportFormat::LammpsData)
+      write_file_atomically(input, lammps_input(s, lammps_law(o.dir), o.to.filename().string()));
     return 0;
   } catch (const BadInput& e) {
     std::cerr << "error: export: " << e.what() << "\n";

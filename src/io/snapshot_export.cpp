@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -27,7 +28,9 @@ int atom_type(const Snapshot& s, std::size_t i) { return s.cluster_id[i] >= 0 ? 
 // "%.17g": every double reads back to the same bits.
 std::string num(double v) { return fmt::format("{:.17g}", v); }
 
-// A box holding every disc whole and every wall, 1 d wider on each side.
+// A box holding every disc whole, 1 d wider on each side. The walls are left out: a wedge's
+// pro base reaches 10^7 d ahead of the S-point, and a box that long makes LAMMPS refuse the file
+// ("Too many atom sorting bins"). Only a snapshot without discs is boxed by its walls.
 struct Box {
   double xlo, xhi, ylo, yhi;
 };
@@ -43,12 +46,13 @@ Box bounding_box(const Snapshot& s) {
     b.ylo = std::min(b.ylo, y[i] - r[i]);
     b.yhi = std::max(b.yhi, y[i] + r[i]);
   }
-  for (const auto& w : s.walls) {
-    b.xlo = std::min({b.xlo, w[0], w[2]});
-    b.xhi = std::max({b.xhi, w[0], w[2]});
-    b.ylo = std::min({b.ylo, w[1], w[3]});
-    b.yhi = std::max({b.yhi, w[1], w[3]});
-  }
+  if (s.size() == 0)
+    for (const auto& w : s.walls) {
+      b.xlo = std::min({b.xlo, w[0], w[2]});
+      b.xhi = std::max({b.xhi, w[0], w[2]});
+      b.ylo = std::min({b.ylo, w[1], w[3]});
+      b.yhi = std::max({b.yhi, w[1], w[3]});
+    }
   if (b.xlo > b.xhi) b = {0, 0, 0, 0};  // no discs, no walls
   return {b.xlo - 1, b.xhi + 1, b.ylo - 1, b.yhi + 1};
 }
@@ -99,13 +103,16 @@ std::string lammps_dump(const Snapshot& s, const ExportSource&) {
 
 std::string xyz(const Snapshot& s, const ExportSource& src) {
   const DiscState d(s);
+  const Box b = bounding_box(s);  // the cell OVITO draws and bins by: the discs', 1 d of margin
   std::string out;
   auto o = std::back_inserter(out);
   fmt::format_to(o, "{}\n", s.size());
   fmt::format_to(o,
+                 "Lattice=\"{} 0 0 0 {} 0 0 0 1\" Origin=\"{} {} -0.5\" "
                  "Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:id:I:1:cluster_id:I:1 Time={} step={} "
                  "pbc=\"F F F\" comment=\"{}\"\n",
-                 num(s.time), s.step, header_line(s, src));
+                 num(b.xhi - b.xlo), num(b.yhi - b.ylo), num(b.xlo), num(b.ylo), num(s.time), s.step,
+                 header_line(s, src));
   for (std::size_t i = 0; i < s.size(); ++i)
     fmt::format_to(o, "{} {} {} 0 {} {} 0 {} {} {}\n", atom_type(s, i) == 2 ? "C" : "D", num(d.x[i]), num(d.y[i]),
                    num(d.vx[i]), num(d.vy[i]), num(d.r[i]), s.id[i], s.cluster_id[i]);
@@ -133,7 +140,52 @@ std::string csv(const Snapshot& s, const ExportSource& src) {
   return out;
 }
 
+// The LAMMPS fix of one wall, when it is a line LAMMPS can take (horizontal: yplane, vertical:
+// xplane), with the discs on the side they are on; "" for a tilted wall.
+std::string wall_plane(const std::array<double, 4>& w, double x_mean, double y_mean) {
+  const auto [ax, ay, bx, by] = w;
+  if (ay == by) return y_mean >= ay ? fmt::format("yplane {} NULL", num(ay)) : fmt::format("yplane NULL {}", num(ay));
+  if (ax == bx) return x_mean >= ax ? fmt::format("xplane {} NULL", num(ax)) : fmt::format("xplane NULL {}", num(ax));
+  return "";
+}
+
 }  // namespace
+
+std::string lammps_input(const Snapshot& s, const LammpsLaw& law, const std::string& data_file) {
+  const DiscState d(s);
+  double x_mean = 0, y_mean = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    x_mean += d.x[i] / static_cast<double>(s.size());
+    y_mean += d.y[i] / static_cast<double>(s.size());
+  }
+  const std::string coeffs =
+      fmt::format("{} {} {} {} {} 1", num(law.kn), num(law.kt), num(law.gamma_n), num(law.gamma_t), num(law.mu));
+  std::string out = fmt::format(
+      "# LAMMPS input for {} (orogen export): Orogen's units (lengths in d, time in sqrt(d/g), g = 1, disc\n"
+      "# density 1 per unit area), its contact law as gran/hooke/history (gamma per unit effective mass, that of\n"
+      "# two discs of diameter 1), its walls as wall/gran planes. Run: lmp -in THIS_FILE [-var steps N]\n"
+      "dimension 2\nboundary f f p\natom_style sphere\ncomm_modify vel yes\nnewton off\n"
+      "read_data {}\n"
+      "set type * density/disc 1.0\n"  // Orogen's masses: pi r^2 (LAMMPS's 2-D default is 4/3 pi r^3)
+      "neighbor 0.1 bin\nneigh_modify every 1 delay 0 check yes\n"
+      "pair_style gran/hooke/history {}\npair_coeff * *\n"
+      "timestep {}\n",
+      data_file, data_file, coeffs, num(law.dt));
+  std::vector<std::string> planes;
+  for (const auto& w : s.walls) {
+    const std::string plane = wall_plane(w, x_mean, y_mean);
+    if (plane.empty()) {
+      out += fmt::format("# wall ({}, {}) - ({}, {}) is tilted: fix wall/gran takes planes along x or y only\n",
+                         num(w[0]), num(w[1]), num(w[2]), num(w[3]));
+    } else if (std::find(planes.begin(), planes.end(), plane) == planes.end()) {
+      planes.push_back(plane);  // a wedge's two bases are one plane here
+      out += fmt::format("fix wall{} all wall/gran hooke/history {} {}\n", planes.size(), coeffs, plane);
+    }
+  }
+  out += "fix integrate all nve/sphere disc\nfix gravity all gravity 1.0 vector 0 -1 0\nfix plane all enforce2d\n"
+         "thermo_style custom step atoms ke\nthermo 100\nvariable steps index 1000\nrun ${steps}\n";
+  return out;
+}
 
 ExportFormat parse_export_format(const std::string& name) {
   if (name == "lammps-data") return ExportFormat::LammpsData;

@@ -25,4 +25,16 @@ struct ExportSource {
 // disc mass is density x pi r^2, density 1).
 std::string export_snapshot(const Snapshot& s, ExportFormat format, const ExportSource& source);
 
+// The contact law in LAMMPS's terms (gran/hooke/history): stiffnesses, dashpot coefficients per
+// unit effective mass, friction, and the time step.
+struct LammpsLaw {
+  double kn, kt, gamma_n, gamma_t, mu, dt;
+};
+
+// A LAMMPS input that reads `data_file` (the lammps-data export of `s`) and runs it: the law,
+// gravity, 2-D, and the snapshot's walls as `fix wall/gran` planes (walls along x or y; a tilted
+// one is named in a comment). The Orogen run's own base conditions (a traction base, other
+// friction on the bases) are not LAMMPS's: the walls take the discs' law.
+std::string lammps_input(const Snapshot& s, const LammpsLaw& law, const std::string& data_file);
+
 }  // namespace orogen

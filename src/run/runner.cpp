@@ -231,7 +231,9 @@ class Run {
     output();
     const auto t0 = std::chrono::steady_clock::now();
     while (state_.outputs <= k) {
-      run_control::between_steps(world_.step, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      // A replay can take as long as its source took: a signal stops it, the set-up report hears it.
+      run_control::between_steps(world_.step,
+                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       if (!exp_->advance(world_)) {
         if (world_.step != last_output_step_) output();  // a run's last output comes at its end
         break;

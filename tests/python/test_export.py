@@ -21,6 +21,11 @@ TINY = ["layer.thickness=5", "wedge.tile_length=4", "wedge.retro_length=4", "wed
         "wedge.s_end=0.1", "wedge.outputs=2", "output.vtp=false", "run.threads=1"]
 
 
+def as_written(v):
+    """A bound as the file writes it (17 significant digits), compared exactly after the round trip."""
+    return float("%.17g" % v)
+
+
 def orogen(*args):
     return subprocess.run([BINARY, *args], capture_output=True, text=True)
 
@@ -126,6 +131,35 @@ class ExportTest(unittest.TestCase):
         self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
         self.assertIn("%d atoms" % len(self.snap["id"]), r.stdout)
         self.assertIn("reading velocities", r.stdout)
+
+    def test_lammps_runs_an_export_of_the_main_job_with_its_walls(self):
+        # Issue 36: the box reached x = -10,000,001 (the pro base), so LAMMPS stopped ("Too many
+        # atom sorting bins"), and the walls were not exported, so the discs had no floor.
+        lmp = shutil.which("lmp")
+        if lmp is None:
+            self.skipTest("lmp (Debian package lammps) is not installed: the LAMMPS run is not checked")
+        main = os.path.join(self.tmp, "main")
+        r = orogen("run", "--out", main, "--set", "wedge.s_end=0.05", "--set", "wedge.outputs=1",
+                   "--set", "output.progress=never", "--threads", "1")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        data = os.path.join(self.tmp, "main.data")
+        r = orogen("export", main, "--format", "lammps-data", "--to", data)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with h5py.File(os.path.join(main, "snapshots.h5"), "r") as f:
+            g = f["output_000001"]
+            x, y, radius = g["x"][()], g["y"][()], g["radius"][()]
+        with open(data) as f:
+            bounds = {line.split()[-1]: [float(v) for v in line.split()[:2]] for line in f if line.rstrip().endswith("hi")}
+        self.assertEqual(bounds["xhi"], [as_written(np.min(x - radius) - 1), as_written(np.max(x + radius) + 1)])
+        self.assertEqual(bounds["yhi"], [as_written(np.min(y - radius) - 1), as_written(np.max(y + radius) + 1)])
+        with open(data + ".in") as f:
+            script = f.read()
+        self.assertIn("yplane 0 NULL", script)  # the bases: a floor under the discs
+        r = subprocess.run([lmp, "-in", "main.data.in", "-var", "steps", "100", "-log", "none"],
+                           capture_output=True, text=True, cwd=self.tmp, timeout=120)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertNotIn("Lost atoms", r.stdout + r.stderr)
+        self.assertIn("100 steps with %d atoms" % len(x), r.stdout)
 
     def test_bad_input_exit_2_naming_it(self):
         out = os.path.join(self.tmp, "x.csv")
