@@ -14,9 +14,9 @@
 #include <stdexcept>
 
 #include "io/snapshot_reader.hpp"
-#include "run/run_folder.hpp"
 #include "render/animation.hpp"
 #include "render/frame_renderer.hpp"
+#include "run/run_folder.hpp"
 
 namespace fs = std::filesystem;
 

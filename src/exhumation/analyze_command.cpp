@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <numbers>
@@ -148,7 +148,7 @@ int analyze(const AnalyzeOptions& options) {
                                       dir.string(), fs::is_regular_file(index) ? "config.toml" : "snapshots.h5"));
   // One analysis at a time writes a folder: it locks the folder itself (flock, nothing
   // written; a running run holds its run.lock and writes its outputs meanwhile, of which
-  // analyze reads only the complete ones); then the temporary files of a killed call go.
+  // analyze reads only the complete ones).
   FileLock lock(dir, FileLock::On::Folder);
   if (lock.open_error() != 0)
     throw AnalyzeError(1, fmt::format("cannot open {}: {}", dir.string(), std::strerror(lock.open_error())));
@@ -156,7 +156,6 @@ int analyze(const AnalyzeOptions& options) {
     throw AnalyzeError(2, fmt::format("{} is being analysed by another orogen process (it holds a lock on the folder); "
                                       "wait for it to end",
                                       dir.string()));
-  remove_own_temporary_files(dir);
   std::optional<Config> config;
   try {
     config = Config::load(config_path, {});
@@ -222,6 +221,7 @@ int analyze(const AnalyzeOptions& options) {
     }
     throw AnalyzeError(2, foreign);
   };
+  remove_own_temporary_files(dir);  // what killed calls left; every check above has passed
   const fs::path state_path = dir / "analysis_state.bin";
   std::optional<AnalysisState> state;
   if (fs::exists(state_path)) {
