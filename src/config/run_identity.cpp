@@ -132,15 +132,14 @@ std::string run_identity_of_toml(std::string_view toml) {
   return fmt::format("{:016x}", fnv1a64(text));
 }
 
-std::string foreign_output(const SnapshotReader& reader, std::int64_t k, const std::string& identity,
-                           const std::string& config_toml, const std::filesystem::path& file) {
-  const OutputStamp s = reader.stamp(k);
-  if (s.config_toml.empty()) return "";
-  const std::string theirs = run_identity_of_toml(s.config_toml);
+std::string foreign_output(const SnapshotReader& reader, std::int64_t k, const OutputStamp& stamp,
+                           const std::string& identity, const std::string& config_toml) {
+  if (stamp.config_toml.empty()) return "";
+  const std::string theirs = run_identity_of_toml(stamp.config_toml);
   if (theirs == identity) return "";
-  const std::string keys = config_differences(config_toml, s.config_toml, "this run", "that file");
-  return fmt::format("{} comes from another run (identity {}, this run's is {}){}{}", file.string(), theirs, identity,
-                     keys.empty() ? "" : ": ", keys);
+  const std::string keys = config_differences(config_toml, stamp.config_toml, "this run", "that file");
+  return fmt::format("{} comes from another run (identity {}, this run's is {}){}{}", reader.output_path(k).string(),
+                     theirs, identity, keys.empty() ? "" : ": ", keys);
 }
 
 }  // namespace orogen

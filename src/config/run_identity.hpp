@@ -4,7 +4,6 @@
 // configurations. Used wherever files are checked to be of one run (the run driver, a
 // branch's source, `orogen analyze`).
 #include <cstdint>
-#include <filesystem>
 #include <map>
 #include <string>
 #include <string_view>
@@ -13,6 +12,7 @@ namespace orogen {
 
 class Config;
 class SnapshotReader;
+struct OutputStamp;
 
 // "contact.kn = 5000.0 in config.toml, 10000.0 in the checkpoint; ..." for every key whose
 // value differs between two resolved configurations (Config::to_toml texts), the extension,
@@ -44,10 +44,10 @@ std::string run_identity(const Config& config);
 // carries it), so that a file copied alone says which run it belongs to.
 std::string run_identity_of_toml(std::string_view toml);
 
-// "" when output k of `reader` is of the run with this identity (or predates outputs that
-// carry their configuration); otherwise why not, naming `file` and the keys that differ
-// from `config_toml`.
-std::string foreign_output(const SnapshotReader& reader, std::int64_t k, const std::string& identity,
-                           const std::string& config_toml, const std::filesystem::path& file);
+// "" when output k, whose attributes are `stamp`, is of the run with this identity (or
+// predates outputs that carry their configuration); otherwise why not, naming its file and
+// the keys that differ from `config_toml`.
+std::string foreign_output(const SnapshotReader& reader, std::int64_t k, const OutputStamp& stamp,
+                           const std::string& identity, const std::string& config_toml);
 
 }  // namespace orogen

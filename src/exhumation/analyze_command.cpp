@@ -202,19 +202,19 @@ int analyze(const AnalyzeOptions& options) {
                                         list(o.settings.closure), h));
   const auto id_it = meta.strings.find("run_identity");
   const std::string identity = id_it == meta.strings.end() ? "" : id_it->second;
-  if (!identity.empty() && identity != run_identity(*config))  // early runs stored none
+  // Early runs stored no identity: nothing to compare then.
+  if (const std::string ours = run_identity(*config); !identity.empty() && identity != ours)
     throw AnalyzeError(2, fmt::format("{} and {} are not of one run (identities {} and {})", index.string(),
-                                      config_path.string(), identity.empty() ? "none" : identity, run_identity(*config)));
+                                      config_path.string(), identity, ours));
   const std::int64_t count = reader->count();
   if (count == 0) throw AnalyzeError(2, fmt::format("{} lists no complete output yet", index.string()));
 
   // Output k, refused if it was copied in from another run.
   const std::string config_toml = config->to_toml();
   const auto read = [&](std::int64_t k) {
-    const fs::path file = dir / "snapshots" / (snapshot_group_name(k) + ".h5");
     std::string foreign;
     try {
-      foreign = foreign_output(*reader, k, identity, config_toml, file);
+      foreign = foreign_output(*reader, k, reader->stamp(k), identity, config_toml);
       if (foreign.empty()) return reader->read(k);
     } catch (const std::exception& e) {
       throw AnalyzeError(1, fmt::format("{}: output {} cannot be read (corrupt or truncated): {}", index.string(), k, e.what()));

@@ -54,6 +54,10 @@ OutputStamp SnapshotReader::stamp(std::int64_t k) const {
   return s;
 }
 
+std::filesystem::path SnapshotReader::output_path(std::int64_t k) const {
+  return data_folder(path_) / (snapshot_group_name(k) + ".h5");
+}
+
 void SnapshotReader::check_index(std::int64_t k) const {
   if (k < 0 || k >= count_)
     throw std::out_of_range(fmt::format("'{}' has {} complete outputs, no output {}", path_.string(), count_, k));

@@ -43,6 +43,8 @@ class SnapshotReader {
   std::int64_t count() const { return count_; }  // complete outputs (n_outputs)
   Snapshot read(std::int64_t k) const;           // 0 <= k < count()
   OutputStamp stamp(std::int64_t k) const;       // the attributes of output k alone
+  // The data file of output k (DIR/snapshots/output_NNNNNN.h5), for messages.
+  std::filesystem::path output_path(std::int64_t k) const;
   const SnapshotMetadata& metadata() const { return meta_; }
   // The extra groups of output k (SnapshotFrame::groups): whether it has one, and a float
   // dataset of it (1-D as rows x 1).

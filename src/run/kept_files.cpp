@@ -35,13 +35,13 @@ void check_outputs(const fs::path& dir, const KeptFiles& kept) {
     throw RunFolderError(fmt::format("{} lists {} outputs but the checkpoint counts {}: the files are not of one run",
                                      index.string(), reader.count(), outputs));
   for (std::int64_t k = 0; k < outputs; ++k) {
-    const fs::path file = dir / "snapshots" / (snapshot_group_name(k) + ".h5");
-    if (const std::string why = foreign_output(reader, k, kept.identity, kept.config_toml, file); !why.empty())
+    const OutputStamp stamp = reader.stamp(k);
+    if (const std::string why = foreign_output(reader, k, stamp, kept.identity, kept.config_toml); !why.empty())
       throw RunFolderError(why);
-    const double time = reader.stamp(k).time, expected = kept.output_times[static_cast<std::size_t>(k)];
-    if (time != expected)
+    const double expected = kept.output_times[static_cast<std::size_t>(k)];
+    if (stamp.time != expected)
       throw RunFolderError(fmt::format("{} is not this run's output {}: its time is {:.9g}, the checkpoint's {:.9g}",
-                                       file.string(), k, time, expected));
+                                       reader.output_path(k).string(), k, stamp.time, expected));
   }
 }
 

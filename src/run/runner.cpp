@@ -500,8 +500,8 @@ void build_branch(Run& run, const BranchSource& source, const fs::path& out) {
   const fs::path h5 = source.dir / "snapshots.h5";
   const SnapshotReader reader(h5);
   const std::string identity = run_identity(source.config);
-  const fs::path file = source.dir / "snapshots" / (snapshot_group_name(source.output) + ".h5");
-  if (const std::string why = foreign_output(reader, source.output, identity, source.config.to_toml(), file);
+  if (const std::string why =
+          foreign_output(reader, source.output, reader.stamp(source.output), identity, source.config.to_toml());
       !why.empty())
     throw BranchError(fmt::format("--from {}: {}", source.text(), why));
   const Snapshot snap = reader.read(source.output);
