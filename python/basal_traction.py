@@ -35,6 +35,9 @@ def late_outputs(run):
     config = tomllib.loads(text.decode() if isinstance(text, bytes) else text)
     s_end = config["wedge"]["s_end"]
     late = [k for k in range(len(series)) if series["S"].iloc[k] >= s_end * 2 / 3 and series["Dp"].iloc[k] < -0.5]
+    if not late:
+        raise SystemExit(f"{run}: no output in the last third of S has a pro front (Dp < -0.5 h0): "
+                         "nothing to measure; run the wedge further")
     return series, h0, config, late
 
 

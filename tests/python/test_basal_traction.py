@@ -1,0 +1,60 @@
+"""python/basal_traction.py (issue 38): what a wedge's bases transmit, read from the contact
+forces of a short main-job wedge. The transmitted friction can never exceed the Coulomb limit
+of its base, and the contacts it counts as at the limit carry exactly mu fn.
+
+The binary is $OROGEN_BINARY (CTest sets it), else build/release/orogen."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "python"))
+import basal_traction  # noqa: E402
+
+BINARY = os.environ.get("OROGEN_BINARY", os.path.join(ROOT, "build", "release", "orogen"))
+
+
+class BasalTraction(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp()
+        cls.folder = os.path.join(cls.tmp, "wedge")
+        r = subprocess.run([BINARY, "run", "--out", cls.folder, "--set", "wedge.s_end=1.5", "--set", "wedge.outputs=6",
+                            "--set", "output.contacts=true", "--set", "output.progress=never", "--set",
+                            "output.vtp=false", "--threads", "1"], capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp)
+
+    def test_the_bases_transmit_at_most_their_coulomb_limit(self):
+        config, late, _, table, slip = basal_traction.measure(self.folder)
+        self.assertGreaterEqual(len(late), 2)  # outputs of the last third with a pro front
+        mu_bp, mu_br = config["wedge"]["mu_bp"], config["wedge"]["mu_br"]
+        self.assertTrue(((table["mu_pro"] > 0) & (table["mu_pro"] <= mu_bp + 1e-12)).all(), table["mu_pro"])
+        self.assertTrue((table["mu_retro"].dropna() <= mu_br + 1e-12).all(), table["mu_retro"])
+        self.assertTrue(((table["at_limit_pro"] >= 0) & (table["at_limit_pro"] <= 1)).all())
+        self.assertTrue((slip["slip"] < 0).all())  # the plate carries the base's discs, faster than they go
+
+    def test_a_contact_at_the_limit_carries_mu_fn(self):
+        with h5py.File(os.path.join(self.folder, "snapshots.h5"), "r") as f:
+            g = f["output_%06d" % (int(f.attrs["n_outputs"]) - 1)]
+            pro, _ = basal_traction.base_rows(g["walls"][()])
+            c = g["contacts"]
+            on_pro = (c["is_wall"][()] == 1) & np.isin(c["id_a"][()], pro) & (c["at_limit"][()] == 1)
+            ft, fn = c["ft"][()][on_pro], c["fn"][()][on_pro]
+            fx, fy = c["fx"][()][on_pro], c["fy"][()][on_pro]
+        self.assertGreater(on_pro.sum(), 0)
+        np.testing.assert_allclose(np.abs(ft) / fn, 0.2, rtol=1e-12)
+        np.testing.assert_allclose(np.abs(fx) / fy, 0.2, rtol=1e-6)  # the base is flat: t along x, n along y
+
+
+if __name__ == "__main__":
+    unittest.main()
