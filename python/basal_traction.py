@@ -81,7 +81,9 @@ def main():
     args = p.parse_args()
     config, late, series, table, slip = measure(args.run)
     w = config["wedge"]
-    print(f"{args.run}: mu_bp {w['mu_bp']}, mu_br {w['mu_br']}, gamma_b {w['gamma_b']}, "
+    law = w.get("traction_law", "drag")  # a run before the key dragged the layer by eq. 4.1
+    base = f"traction_law {law}" + (f", gamma_b {w['gamma_b']}" if law == "drag" else "")
+    print(f"{args.run}: {w['basal']}, mu_bp {w['mu_bp']}, mu_br {w['mu_br']}, {base}, "
           f"{len(late)} outputs, S {series['S'].iloc[late[0]]:.2f}-{series['S'].iloc[late[-1]]:.2f}")
     for name in table.columns:
         col = table[name]

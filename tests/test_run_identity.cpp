@@ -4,7 +4,12 @@
 // computed never count.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <string>
+
 #include "config/config.hpp"
+#include "config/run_identity.hpp"
 #include "run/run_folder.hpp"
 
 namespace orogen {
@@ -23,6 +28,33 @@ TEST(RunIdentity, LaterKeysCountOnlyAwayFromTheirDefaults) {
   EXPECT_NE(identity_with({"contact.damping_rate=1"}), base);
   EXPECT_NE(identity_with({"contact.normal_force=linear_pull", "contact.damping=per_mass"}),
             identity_with({"contact.damping=per_mass"}));
+}
+
+// wedge.traction_law came with the fix of the traction base (issue 38): its default, the
+// Coulomb belt, is not what older runs computed. A configuration Orogen wrote (a run's
+// config.toml) that lacks it is of such a run and holds its value before, eq. 4.1's drag, so
+// the run keeps its identity and resumes as it was; a user's file without it gets the default.
+TEST(RunIdentity, AnOlderRunsConfigurationWithoutTheTractionLawKeepsTheDrag) {
+  const std::string resolved = Config().to_toml();
+  const std::string line = "traction_law = \"spring\"\n";
+  const std::size_t at = resolved.find(line);
+  ASSERT_NE(at, std::string::npos);
+  const std::string older = resolved.substr(0, at) + resolved.substr(at + line.size());
+  const auto dir = std::filesystem::temp_directory_path() / "orogen_test_later_keys";
+  std::filesystem::create_directories(dir);
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  };
+  const Config old_run = Config::load(write("older_run.toml", older), {});
+  EXPECT_EQ(old_run.get_string("wedge.traction_law"), "drag");
+  EXPECT_EQ(run_identity(old_run), run_identity_of_toml(older));
+  EXPECT_EQ(config_differences(old_run.to_toml(), older, "config.toml", "the checkpoint"), "");
+  EXPECT_NE(run_identity(Config()), run_identity_of_toml(older));
+  EXPECT_EQ(identity_with({"wedge.traction_law=drag"}), run_identity_of_toml(older));
+  const Config user = Config::load(write("user.toml", "[wedge]\nmu_bp = 0.2\n"), {});
+  EXPECT_EQ(user.get_string("wedge.traction_law"), "spring");
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

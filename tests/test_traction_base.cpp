@@ -1,7 +1,9 @@
-// The traction base (thesis eq. 4.1, wall_contact_law.hpp): its implicit drag steps against
-// the body's effective mass at the contact point (boundary/traction_mass.hpp), so a body
-// carried by the plate comes to the no-slip state and stays there, with no force chattering
-// at the Coulomb limit, for any drag coefficient and friction.
+// The traction base. Eq. 4.1's drag (wedge.traction_law = "drag", wall_contact_law.hpp) steps
+// against the body's effective mass at the contact point (boundary/traction_mass.hpp), so a
+// body carried by the plate comes to the no-slip state and stays there, with no force
+// chattering at the Coulomb limit, for any drag coefficient and friction; but a body held
+// back on the plate gets at most m v_t / dt from it. The Coulomb belt (traction_law =
+// "spring", the default: a rough wall moving with the plate) transmits mu F_n to it.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -81,6 +83,46 @@ TEST(TractionBase, ABodyOnTwoOfItsDiscsMovesWithThePlate) {
     EXPECT_EQ(w.wall_contact_stats(0).touching, 2u);
     EXPECT_EQ(w.wall_contact_stats(0).at_limit, 0u) << "mu " << mu;
   }
+}
+
+// A three-disc body pressed onto the moving plate by a load of about 130 times its weight and
+// held by a smooth stop ahead of it, as a disc at the base of a thick wedge is held by the
+// wedge: at rest, the stop's push balances what the plate transmits, and the plate carries
+// the weight and the load, so the transmitted friction is the stop's normal force over the
+// plate's (both from the overlaps of the linear law; at rest no damping acts).
+double transmitted_friction(WallFriction law, double mu, double dt_fraction) {
+  World w = plate_world(1e4, mu);
+  w.walls[0].friction = law;
+  const double r = 0.4;
+  w.walls.push_back(testing::wall(0.8, -1, 0.8, 3));  // the stop, touching disc b's right side
+  const std::size_t a = w.add_disc(-0.4, r, r), b = w.add_disc(0.4, r, r), c = w.add_disc(0, 1.0, r);
+  const std::array<std::size_t, 3> members{a, b, c};
+  w.add_cluster(members);
+  w.dt = dt_fraction * w.stable_dt();
+  const double load = 200.0;
+  w.hooks.add(Stage::AfterForces, "test.load", [c, load](World& world) { world.scratch.forces[c].fy -= load; });
+  for (int s = 0; s < 40000; ++s) w.advance();
+  const auto& d = w.discs;
+  EXPECT_NEAR(w.clusters.vx[0], 0.0, 1e-6);
+  EXPECT_NEAR(w.clusters.vy[0], 0.0, 1e-6);
+  const double stop = w.law.kn * (r - (0.8 - d.x[b]));
+  const double plate = w.law.kn * (r - d.y[a]) + w.law.kn * (r - d.y[b]);
+  return stop / plate;
+}
+
+// The Coulomb belt transmits exactly mu_bp F_n to a body it slides under, at any time step:
+// the wedge's base is a Coulomb base. Eq. 4.1's drag transmits what one step's slip can carry,
+// a fraction of mu_bp that halves with dt: the base under the thesis's wedges was weaker than
+// its mu_bp, and more so the thicker the wedge (docs/wedge-evidence.md).
+TEST(TractionBase, TheCoulombBeltTransmitsMuFnToABodyHeldOnItAtAnyTimeStep) {
+  for (double dt_fraction : {0.5, 0.25}) {
+    EXPECT_NEAR(transmitted_friction(WallFriction::Rough, 0.2, dt_fraction), 0.2, 1e-6) << dt_fraction;
+    EXPECT_NEAR(transmitted_friction(WallFriction::Rough, 0.5, dt_fraction), 0.5, 1e-6) << dt_fraction;
+  }
+  const double drag = transmitted_friction(WallFriction::Traction, 0.2, 0.5);
+  const double drag_half_dt = transmitted_friction(WallFriction::Traction, 0.2, 0.25);
+  EXPECT_LT(drag, 0.5 * 0.2);
+  EXPECT_NEAR(drag_half_dt / drag, 2.0, 0.1) << "the drag a slip carries grows as 1 / dt";
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "config/config.hpp"
@@ -279,9 +280,11 @@ std::vector<std::size_t> retro_base_discs(const World& w) {
 }
 
 TEST(Wedge, BothBasalConditionsCarryTheLayerAtThePlateSpeed) {
-  for (const std::string basal : {"traction", "constant_velocity"}) {
-    SCOPED_TRACE(basal);
-    WedgeRun r({"wedge.basal=" + basal, "wedge.s_end=1"});
+  // Traction with either law of the pro plate (its Coulomb belt, the default, and eq. 4.1's drag).
+  for (const auto& [basal, law] : {std::pair<std::string, std::string>{"traction", "spring"},
+                                   {"traction", "drag"}, {"constant_velocity", "spring"}}) {
+    SCOPED_TRACE(basal + ", " + law);
+    WedgeRun r({"wedge.basal=" + basal, "wedge.traction_law=" + law, "wedge.s_end=1"});
     ASSERT_TRUE(r.run_to(0.15));
     // Far from the S-point, inside the active region (window at -5 h0).
     int count = 0;

@@ -16,6 +16,8 @@ namespace orogen {
 namespace {
 
 const std::string kDefault = "default";
+// The first line of every resolved configuration Orogen writes (Config::to_toml).
+constexpr std::string_view kResolvedHeading = "# Orogen configuration, fully resolved: every key with the value used.";
 const std::string kSetSource = "--set";
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
@@ -269,11 +271,7 @@ std::string read_config_text(const std::filesystem::path& file) {
   return text;
 }
 
-}  // namespace
-
-toml::table parse_toml_file(const std::filesystem::path& file) {
-  const std::string path = file.string();
-  const std::string text = read_config_text(file);
+toml::table parse_toml_text(const std::string& text, const std::string& path) {
   if (const std::size_t line = too_deep_line(text))
     throw config_error(path + ", line " + std::to_string(line), "", "", nesting_text());
   try {
@@ -284,6 +282,12 @@ toml::table parse_toml_file(const std::filesystem::path& file) {
         path + ", line " + std::to_string(b.line) + ", column " + std::to_string(b.column), "", "",
         "TOML syntax error: " + std::string(e.description()));
   }
+}
+
+}  // namespace
+
+toml::table parse_toml_file(const std::filesystem::path& file) {
+  return parse_toml_text(read_config_text(file), file.string());
 }
 
 ConfigError config_error(std::string_view source, std::string_view key, std::string_view value,
@@ -307,7 +311,8 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
   Config cfg;
   if (file) {
     const std::string path = file->string();
-    const toml::table root = parse_toml_file(*file);
+    const std::string text = read_config_text(*file);
+    const toml::table root = parse_toml_text(text, path);
     // Gather every leaf with its dotted name, then report in file order (toml++ sorts keys).
     struct Entry {
       std::string name;
@@ -345,6 +350,16 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
       cfg.values_[*idx] = convert(schema()[*idx], *e.node, src, render(*e.node));
       cfg.sources_[*idx] = path;
     }
+    // A configuration Orogen wrote (a run's config.toml) that lacks a key added later is of a
+    // run made before the key: the key holds the value that computes what that run computed.
+    if (text.find(kResolvedHeading) != std::string::npos)
+      for (const auto& later : later_keys()) {
+        const std::size_t idx = *find_key(later.name);
+        if (cfg.sources_[idx] != kDefault || later.before == format_value(cfg.values_[idx])) continue;
+        const toml::table parsed = toml::parse("v = " + later.before);
+        cfg.values_[idx] = convert(schema()[idx], *parsed.get("v"), path, later.before);
+        cfg.sources_[idx] = path;
+      }
   }
 
   for (const auto& arg : overrides) {
@@ -440,7 +455,7 @@ std::string Config::sources_of(const std::vector<std::string_view>& keys) const 
 }
 
 std::string Config::to_toml() const {
-  std::string out = "# Orogen configuration, fully resolved: every key with the value used.\n";
+  std::string out = std::string(kResolvedHeading) + "\n";
   std::string_view section;
   const auto& s = schema();
   for (std::size_t i = 0; i < s.size(); ++i) {

@@ -18,19 +18,6 @@ constexpr std::array<std::string_view, 7> kKeysOutsideIdentity = {
     "run.threads",     "run.adapt_threads",       "run.adapt_slice",    "output.progress",
     "output.checkpoint_every", "output.vtp", "singly.speed_bound"};
 
-// Keys added after runs were made whose defaults compute what those runs computed: a run
-// started before they existed keeps its identity and resumes. They enter the identity only
-// when set away from their defaults, and one absent from a stored configuration (a checkpoint
-// of such a run) stands for its default.
-constexpr std::array<std::string_view, 4> kLaterKeys = {"contact.normal_force", "contact.damping",
-                                                        "contact.damping_rate", "singly.speed_bound"};
-
-bool is_later_key(std::string_view key) {
-  return std::find(kLaterKeys.begin(), kLaterKeys.end(), key) != kLaterKeys.end();
-}
-
-const std::map<std::string, std::string>& default_values();
-
 constexpr std::array<std::string_view, 2> kExtensionKeys = {"wedge.s_end", "wedge.outputs"};
 
 }  // namespace
@@ -58,15 +45,11 @@ std::map<std::string, std::string> key_values(std::string_view toml) {
 }
 
 namespace {
-const std::map<std::string, std::string>& default_values() {
-  static const std::map<std::string, std::string> defaults = key_values(Config().to_toml());
-  return defaults;
-}
-
-// The key-value pairs of a stored configuration, a later key it lacks at its default.
+// The key-value pairs of a stored configuration, a later key it lacks at its value before
+// (schema.hpp, LaterKey).
 std::map<std::string, std::string> stored_key_values(std::string_view toml) {
   auto kv = key_values(toml);
-  for (const auto key : kLaterKeys) kv.emplace(std::string(key), default_values().at(std::string(key)));
+  for (const auto& key : later_keys()) kv.emplace(key.name, key.before);
   return kv;
 }
 }  // namespace
@@ -125,7 +108,7 @@ std::string run_identity(const Config& config) { return run_identity_of_toml(con
 std::string run_identity_of_toml(std::string_view toml) {
   std::string text;
   for (const auto& [key, value] : key_values(toml)) {
-    if (is_later_key(key) && default_values().at(key) == value) continue;
+    if (const LaterKey* later = find_later_key(key); later && later->before == value) continue;
     if (!is_display_key(key) && !is_extension_key(key) && !is_analysis_key(key))
       text += key + "=" + value + "\n";
   }

@@ -127,9 +127,16 @@ const std::vector<KeySpec>& schema() {
       real("wedge.mu_bp", 0.2, ge(0), none, "pro-side basal friction coefficient mu_bp [-]"),
       real("wedge.mu_br", 0.4, ge(0), none,
            "retro-side basal friction coefficient mu_br; 2 mu_bp, the lowest ratio of Experiment 3 [-]"),
+      text("wedge.traction_law", "spring", {"spring", "drag"},
+           "law of the pro-side plate under basal = traction: spring, a Coulomb belt (tangential "
+           "spring with history moving with the plate, capped at mu_bp F_n), which transmits mu_bp "
+           "F_n wherever the layer slips, for any time step; drag, eq. 4.1 taken implicitly (gamma_b), "
+           "whose force a slip can reach is capped at m v_t / dt, so that under a thick wedge the base "
+           "transmits less than mu_bp (0.11 of 0.2 in the main job): the only law until issue 38's "
+           "fix, kept to reproduce older runs (docs/model.md, Bases)"),
       real("wedge.gamma_b", 10000.0, gt(0), none,
-           "traction drag coefficient gamma_b of the pro-side plate (eq. 4.1), applied implicitly "
-           "over a step so that any value is stable [m sqrt(g/d)]"),
+           "traction drag coefficient gamma_b of the pro-side plate under traction_law = drag "
+           "(eq. 4.1), applied implicitly over a step so that any value is stable [m sqrt(g/d)]"),
       real("wedge.s_end", 8.0, gt(0), none, "run until this normalised convergence S = v t / h0 [-]"),
       integer("wedge.outputs", 100, ge(1), le(kMaxOutputs), "output steps over the run"),
       real("wedge.window", 6.0, gt(0), none,
@@ -227,6 +234,26 @@ std::optional<std::size_t> find_key(std::string_view name) {
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s[i].name == name) return i;
   return std::nullopt;
+}
+
+const std::vector<LaterKey>& later_keys() {
+  // Those whose default computes what runs before them computed keep it as their value before.
+  static const std::vector<LaterKey> keys = [] {
+    std::vector<LaterKey> out;
+    for (const std::string_view name :
+         {"contact.normal_force", "contact.damping", "contact.damping_rate", "singly.speed_bound"})
+      out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
+    // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
+    out.push_back({"wedge.traction_law", format_value(std::string("drag"))});
+    return out;
+  }();
+  return keys;
+}
+
+const LaterKey* find_later_key(std::string_view name) {
+  for (const auto& k : later_keys())
+    if (k.name == name) return &k;
+  return nullptr;
 }
 
 std::vector<std::string> schema_sections() {

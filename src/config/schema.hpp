@@ -48,6 +48,18 @@ const std::vector<KeySpec>& schema();
 // Index into schema() of a dotted name, or nullopt.
 std::optional<std::size_t> find_key(std::string_view name);
 
+// A key added after runs were made, with the value (as TOML writes it) that computes what
+// those runs computed: a stored resolved configuration that lacks the key holds that value,
+// and the key enters a run's identity only when set away from it, so that older runs keep
+// their identity and resume as they were (config/run_identity.hpp). For most such keys the
+// value before is the default; for a fixed defect (wedge.traction_law) it is the old law.
+struct LaterKey {
+  std::string name;
+  std::string before;
+};
+const std::vector<LaterKey>& later_keys();
+const LaterKey* find_later_key(std::string_view name);  // nullptr: not a later key
+
 // Section names in schema order.
 std::vector<std::string> schema_sections();
 

@@ -61,7 +61,10 @@ void WedgeExperiment::build_layer(World& w) {
   const double L = tile_.length;
   x_end_ = spec_.retro_length * spec_.h0;
   Wall pro{.name = std::string(kProBase), .ax = -1e7, .ay = 0, .bx = 0, .by = 0, .surface_speed = spec_.v, .mu = spec_.mu_bp};
-  pro.friction = spec_.basal == BasalCondition::Traction ? WallFriction::Traction : WallFriction::Rough;
+  // Only eq. 4.1's drag needs a traction wall: the Coulomb belt of the traction condition is
+  // the rough wall of the constant-velocity one, the retro base's law, moving with the plate.
+  const bool drag = spec_.basal == BasalCondition::Traction && spec_.traction_law == TractionLaw::Drag;
+  pro.friction = drag ? WallFriction::Traction : WallFriction::Rough;
   pro.traction_gamma = spec_.gamma_b;
   Wall retro{.name = std::string(kRetroBase), .ax = 0, .ay = 0, .bx = x_end_ + 1, .by = 0,
              .friction = WallFriction::Rough, .mu = spec_.mu_br};

@@ -18,13 +18,17 @@
 namespace orogen {
 
 enum class BasalCondition { Traction, ConstantVelocity };
+// The pro-side plate's law under the traction condition: a Coulomb belt (the rough wall's
+// spring moving with the plate) or eq. 4.1's drag (wedge.traction_law, docs/model.md "Bases").
+enum class TractionLaw { Spring, Drag };
 
 struct WedgeSpec {
   BasalCondition basal = BasalCondition::Traction;
   double h0 = 10;              // layer thickness (d)
   double v = 0.025;            // convergence speed of the pro-side plate (d per sqrt(d/g))
   double mu_bp = 0.2, mu_br = 0.4;  // basal friction, pro and retro side
-  double gamma_b = 1e4;        // traction drag coefficient (m g / sqrt(g d))
+  TractionLaw traction_law = TractionLaw::Spring;
+  double gamma_b = 1e4;        // traction drag coefficient (m g / sqrt(g d)), TractionLaw::Drag only
   double s_end = 8;            // run until this normalised convergence S
   int outputs = 100;           // output steps over the run
   double window = 6;           // active region reaches this many h0 beyond each front

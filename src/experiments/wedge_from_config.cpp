@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <variant>
 
 #include "config/config.hpp"
 #include "experiments/spec_from_config.hpp"
@@ -33,6 +34,20 @@ void check_packing_file(const Config& c, const WedgeSpec& w) {
   if (!problem.empty()) throw config_error(c.source_of("wedge.packing_file"), "wedge.packing_file", w.packing_file, problem);
 }
 
+// gamma_b is eq. 4.1's drag coefficient: under the Coulomb belt it would change nothing, so a
+// value set away from its default there is a mistake (an older configuration that tunes the
+// drag), not a silent no-op.
+void check_drag_coefficient(const Config& c, const WedgeSpec& w) {
+  const auto& spec = schema()[*find_key("wedge.gamma_b")];
+  if (w.basal != BasalCondition::Traction || w.traction_law != TractionLaw::Spring ||
+      w.gamma_b == std::get<double>(spec.default_value))
+    return;
+  throw config_error(c.source_of("wedge.gamma_b"), "wedge.gamma_b", format_float(w.gamma_b),
+                     "acts only with wedge.traction_law = \"drag\" (eq. 4.1's drag); this run's pro plate is the "
+                     "Coulomb belt (\"spring\", the default), which has no drag coefficient: set "
+                     "wedge.traction_law = \"drag\" or leave wedge.gamma_b out");
+}
+
 }  // namespace
 
 std::unique_ptr<Experiment> make_wedge_experiment(const Config& c) {
@@ -42,6 +57,7 @@ std::unique_ptr<Experiment> make_wedge_experiment(const Config& c) {
   w.v = c.get_float("wedge.speed");
   w.mu_bp = c.get_float("wedge.mu_bp");
   w.mu_br = c.get_float("wedge.mu_br");
+  w.traction_law = c.get_string("wedge.traction_law") == "drag" ? TractionLaw::Drag : TractionLaw::Spring;
   w.gamma_b = c.get_float("wedge.gamma_b");
   w.s_end = c.get_float("wedge.s_end");
   w.outputs = c.get_int32("wedge.outputs");
@@ -55,6 +71,7 @@ std::unique_ptr<Experiment> make_wedge_experiment(const Config& c) {
   w.packing_file = c.get_string("wedge.packing_file");
   read_layer_keys(c, w);
   check_wedge_size(c, w);
+  check_drag_coefficient(c, w);
   if (!w.packing_file.empty()) check_packing_file(c, w);
   check_imposed_speed(c, "wedge.speed");
   return std::make_unique<WedgeExperiment>(std::move(w));

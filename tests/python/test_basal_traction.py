@@ -1,6 +1,9 @@
 """python/basal_traction.py (issue 38): what a wedge's bases transmit, read from the contact
 forces of a short main-job wedge. The transmitted friction can never exceed the Coulomb limit
-of its base, and the contacts it counts as at the limit carry exactly mu fn.
+of its base, and the contacts it counts as at the limit carry exactly mu fn. The pro plate is
+a Coulomb belt (wedge.traction_law = "spring"): the contacts below the limit stick to it, those
+at the limit are held back by the wedge, and the base under the wedge transmits nearly mu_bp
+(eq. 4.1's drag transmitted 0.11 of 0.2 late in the main job).
 
 The binary is $OROGEN_BINARY (CTest sets it), else build/release/orogen."""
 import os
@@ -38,10 +41,14 @@ class BasalTraction(unittest.TestCase):
         config, late, _, table, slip = basal_traction.measure(self.folder)
         self.assertGreaterEqual(len(late), 2)  # outputs of the last third with a pro front
         mu_bp, mu_br = config["wedge"]["mu_bp"], config["wedge"]["mu_br"]
-        self.assertTrue(((table["mu_pro"] > 0) & (table["mu_pro"] <= mu_bp + 1e-12)).all(), table["mu_pro"])
-        self.assertTrue((table["mu_retro"].dropna() <= mu_br + 1e-12).all(), table["mu_retro"])
+        # fx, fy hold mu to about 1e-8: the pro base starts at x = -1e7, so its contact normals tilt by rounding
+        self.assertTrue(((table["mu_pro"] > 0) & (table["mu_pro"] <= mu_bp * (1 + 1e-6))).all(), table["mu_pro"])
+        self.assertTrue((table["mu_retro"].dropna() <= mu_br * (1 + 1e-6)).all(), table["mu_retro"])
         self.assertTrue(((table["at_limit_pro"] >= 0) & (table["at_limit_pro"] <= 1)).all())
-        self.assertTrue((slip["slip"] < 0).all())  # the plate carries the base's discs, faster than they go
+        self.assertGreaterEqual(table["mu_pro"].mean(), 0.7 * mu_bp, table["mu_pro"])
+        below, at = slip[slip.at_limit == 0].slip, slip[slip.at_limit == 1].slip
+        self.assertLess(abs(below.median()), 0.02)  # stuck to the plate (an elastic stick)
+        self.assertLess(at.median(), -0.1)  # the wedge holds them back: slower than the plate
 
     def test_a_contact_at_the_limit_carries_mu_fn(self):
         with h5py.File(os.path.join(self.folder, "snapshots.h5"), "r") as f:
