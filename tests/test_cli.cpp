@@ -397,6 +397,8 @@ TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
        {"contact.damping_rate = -1", "must be >= 0"}},
       {"--out " + d + "new' --set run.experiment=singly_vergent --set singly.speed=0.5 --set singly.speed_bound=refuse",
        {"singly.speed = 0.5", "thesis eq. 4.3"}},
+      {"--out " + d + "new' --set particles.packing=hexagonal --set particles.placement=rain",
+       {"particles.placement = rain", "applies to the random packings"}},
       {"--out " + d + "new' --set wedge.gamma_b=30", {"wedge.gamma_b = 30.0", "wedge.traction_law = \"drag\""}},
       {"--out " + d + "new' --set wedge.traction_law=viscous", {"wedge.traction_law = viscous", "\"spring\", \"drag\""}},
       {"--out " + d + "new' --threads abc", {"--threads"}},

@@ -70,6 +70,14 @@ const std::vector<KeySpec>& schema() {
 
       text("particles.packing", "random_clusters", {"hexagonal", "random_discs", "random_clusters"},
            "how the layer is built: hexagonal discs, random discs or random rigid clusters"),
+      text("particles.placement", "grid", {"grid", "lattice", "rain"},
+           "where the random particles start before they settle (the layer's preparation, with "
+           "settle.mu): grid, one per square cell with random offsets, all falling together; "
+           "lattice, on the points of a triangular lattice (discs: spacing d_max, touching where "
+           "d = d_max; the polydisperse lattice of other DEM codes); rain, the grid's cells "
+           "stretched six times upward with each particle at a random height in its cell, so that "
+           "a dilute rain builds the layer on its growing surface (pluviation, as sand is sieved "
+           "into a sandbox; docs/model.md, Packings)"),
       real("particles.d_min", 0.7, ge(0.01), le(1), "smallest disc diameter [d]"),
       real("particles.d_max", 1.0, ge(0.01), le(1), "largest disc diameter [d]"),
 
@@ -241,7 +249,8 @@ const std::vector<LaterKey>& later_keys() {
   static const std::vector<LaterKey> keys = [] {
     std::vector<LaterKey> out;
     for (const std::string_view name :
-         {"contact.normal_force", "contact.damping", "contact.damping_rate", "singly.speed_bound"})
+         {"contact.normal_force", "contact.damping", "contact.damping_rate", "singly.speed_bound",
+          "particles.placement"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
     out.push_back({"wedge.traction_law", format_value(std::string("drag"))});

@@ -15,6 +15,11 @@ namespace orogen {
 PackingSpec packing_spec(const Config& c) {
   PackingSpec p;
   p.kind = packing_kind_from_name(c.get_string("particles.packing"));
+  p.placement = placement_from_name(c.get_string("particles.placement"));
+  if (p.kind == PackingKind::Hexagonal && p.placement != Placement::Grid)
+    throw config_error(c.source_of("particles.placement"), "particles.placement", c.get_string("particles.placement"),
+                       "applies to the random packings; particles.packing = \"hexagonal\" is a lattice of equal "
+                       "discs already (leave particles.placement at \"grid\")");
   p.length = c.get_float("layer.length");
   p.thickness = c.get_float("layer.thickness");
   p.d_min = c.get_float("particles.d_min");

@@ -27,7 +27,56 @@ std::string_view packing_kind_name(PackingKind kind) {
   return "?";
 }
 
+Placement placement_from_name(std::string_view name) {
+  if (name == "grid") return Placement::Grid;
+  if (name == "lattice") return Placement::Lattice;
+  if (name == "rain") return Placement::Rain;
+  throw std::invalid_argument("unknown placement '" + std::string(name) + "'");
+}
+
+std::string_view placement_name(Placement placement) {
+  switch (placement) {
+    case Placement::Grid: return "grid";
+    case Placement::Lattice: return "lattice";
+    case Placement::Rain: return "rain";
+  }
+  return "?";
+}
+
 namespace {
+
+// How many times taller than wide a rain's cells are: the particles of one row of the grid
+// land spread over that many rows' worth of time, each on the surface the earlier ones built.
+constexpr double kRainSpread = 6.0;
+
+// The slots the random particles start in, row by row from the floor up: slot k's centre.
+// Grid: square cells of side `cell`. Lattice: a triangular lattice of spacing `cell` (every
+// other row shifted by half a cell, rows sqrt(3)/2 cell apart). Rain: the grid's cells
+// stretched kRainSpread times upward, the particle at a random height in its cell (drawn here,
+// after whatever the caller drew for it).
+class Slots {
+ public:
+  Slots(Placement placement, double length, double cell)
+      : placement_(placement), cell_(cell),
+        columns_(static_cast<std::size_t>(std::floor((length - (placement == Placement::Lattice ? 0.5 * cell : 0.0)) / cell))) {}
+
+  void centre(std::size_t k, Random& rng, double& x, double& y) const {
+    const auto row = static_cast<double>(k / columns_), column = static_cast<double>(k % columns_);
+    x = (column + 0.5) * cell_;
+    y = (row + 0.5) * cell_;
+    if (placement_ == Placement::Lattice) {
+      x += (k / columns_) % 2 ? 0.5 * cell_ : 0.0;
+      y = (row * std::sqrt(3.0) / 2.0 + 0.5) * cell_;
+    } else if (placement_ == Placement::Rain) {
+      y = (row * kRainSpread + 0.5) * cell_ + rng.uniform(0.0, (kRainSpread - 1.0) * cell_);
+    }
+  }
+
+ private:
+  Placement placement_;
+  double cell_;
+  std::size_t columns_;
+};
 
 void add_box(World& w, const PackingSpec& s) {
   const double top = 4.0 * s.thickness + 20.0;
@@ -57,15 +106,19 @@ void place_random_discs(World& w, const PackingSpec& s, Random& rng) {
   const double disc_area = std::numbers::pi * d_mean * d_mean / 4.0;
   constexpr double kSolidFraction = 0.82;  // of a settled random polydisperse 2-D packing
   const auto count = static_cast<std::size_t>(s.length * s.thickness * s.overfill * kSolidFraction / disc_area);
-  // Cells wider than a disc, with random offsets, so that discs do not fall in stacked
-  // columns (which settle into a loose, column-jammed packing).
+  // Grid and rain: cells wider than a disc, with random offsets, so that discs do not fall in
+  // stacked columns (which settle into a loose, column-jammed packing). Lattice: the lattice
+  // points themselves, d_max apart.
+  const bool lattice = s.placement == Placement::Lattice;
+  const Slots slots(s.placement, s.length, lattice ? s.d_max : s.d_max * 1.25);
   const double cell = s.d_max * 1.25;
-  const auto columns = static_cast<std::size_t>(std::floor(s.length / cell));
   for (std::size_t k = 0; k < count; ++k) {
     const double r = 0.5 * rng.uniform(s.d_min, s.d_max);
-    const double play = 0.5 * cell - r;
-    const double x = (static_cast<double>(k % columns) + 0.5) * cell + rng.uniform(-play, play);
-    const double y = (static_cast<double>(k / columns) + 0.5) * cell + rng.uniform(-play, play);
+    const double play = lattice ? 0.0 : 0.5 * cell - r;
+    double x, y;
+    slots.centre(k, rng, x, y);
+    x += rng.uniform(-play, play);
+    y += rng.uniform(-play, play);
     w.add_disc(x, y, r);
   }
 }
@@ -76,8 +129,7 @@ void place_random_clusters(World& w, const PackingSpec& s, Random& rng) {
   const double cluster_area = 3.0 * std::numbers::pi * d_mean * d_mean / 4.0;
   constexpr double kSolidFraction = 0.80;
   const auto count = static_cast<std::size_t>(s.length * s.thickness * s.overfill * kSolidFraction / cluster_area);
-  const double cell = 2.3 * s.d_max;  // a cluster fits in a circle of radius < 1.1 d_max
-  const auto columns = static_cast<std::size_t>(std::floor(s.length / cell));
+  const Slots slots(s.placement, s.length, 2.3 * s.d_max);  // a cluster fits in a circle of radius < 1.1 d_max
   for (std::size_t k = 0; k < count; ++k) {
     const double r1 = 0.5 * rng.uniform(s.d_min, s.d_max);
     const double r2 = 0.5 * rng.uniform(s.d_min, s.d_max);
@@ -93,8 +145,8 @@ void place_random_clusters(World& w, const PackingSpec& s, Random& rng) {
     const double gy = (m[0] * py[0] + m[1] * py[1] + m[2] * py[2]) / msum;
     const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
     const double cs = std::cos(angle), sn = std::sin(angle);
-    const double cx = (static_cast<double>(k % columns) + 0.5) * cell;
-    const double cy = (static_cast<double>(k / columns) + 0.5) * cell;
+    double cx, cy;
+    slots.centre(k, rng, cx, cy);
     const double radii[3] = {r1, r2, r3};
     std::size_t idx[3];
     for (int q = 0; q < 3; ++q) {

@@ -1,7 +1,7 @@
 #pragma once
 // Packings (MODEL §10, thesis 3.2, Fig 3.3): regular hexagonal, random single discs and
-// random rigid 3-disc clusters, placed on a grid without overlap in a box and then settled
-// under gravity (see packing/settle.hpp).
+// random rigid 3-disc clusters, placed without overlap in a box (on a grid, a lattice or as a
+// rain) and then settled under gravity (experiments/packing_experiment.hpp).
 #include <cstdint>
 #include <string_view>
 
@@ -14,8 +14,16 @@ enum class PackingKind { Hexagonal, RandomDiscs, RandomClusters };
 PackingKind packing_kind_from_name(std::string_view name);
 std::string_view packing_kind_name(PackingKind kind);
 
+// Where the random particles start (particles.placement): one per square cell with random
+// offsets; on a triangular lattice; or a dilute rain (the grid stretched upward).
+enum class Placement { Grid, Lattice, Rain };
+
+Placement placement_from_name(std::string_view name);
+std::string_view placement_name(Placement placement);
+
 struct PackingSpec {
   PackingKind kind = PackingKind::RandomDiscs;
+  Placement placement = Placement::Grid;
   double length = 100;     // box width (d)
   double thickness = 10;   // target settled layer thickness h0 (d)
   double d_min = 0.7, d_max = 1.0;
