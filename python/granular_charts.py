@@ -456,6 +456,21 @@ def residual_from(run):
     return 2.0 / 3.0 * fnum(run.value("biaxial.strain_end", 0.2))
 
 
+def preparation(run):
+    """The layer's preparation (docs/model.md, Packings): (particles.placement, settle.mu); runs
+    made before the placement key were placed on the grid."""
+    return str(run.value("particles.placement", "grid")), fnum(run.value("settle.mu", 0.0))
+
+
+def same_preparation(a, b):
+    return a[0] == b[0] and same(a[1], b[1])
+
+
+def preparation_text(prep):
+    """'' for the default preparation (grid, frictionless), else ', rain, settle.mu 0.3'."""
+    return "" if same_preparation(prep, ("grid", 0.0)) else ", %s, settle.mu %g" % prep
+
+
 def load_biaxial(run):
     s = run.summary
     tapers = {}
@@ -464,7 +479,7 @@ def load_biaxial(run):
         if m and finite(fnum(m.group(1))):
             tapers[(fnum(m.group(1)), m.group(2))] = v
     return dict(run=run, name=run.name, packing=str(run.value("particles.packing", "?")),
-                mu=fnum(run.value("contact.mu")), phi_peak=s.get("phi_peak_deg", NAN),
+                mu=fnum(run.value("contact.mu")), prep=preparation(run), phi_peak=s.get("phi_peak_deg", NAN),
                 phi_residual=s.get("phi_residual_deg", NAN), strain_peak=s.get("axial_strain_peak", NAN),
                 tapers=tapers, residual_from=residual_from(run), summary=s)
 
@@ -640,19 +655,21 @@ def make_biaxial(paths, out_dir):
 
 
 class Bulk:
-    """Bulk friction of biaxial runs by (packing, contact mu): means over the runs (seeds)."""
+    """Bulk friction of biaxial runs by (packing, contact mu, preparation): means over the runs
+    (seeds). A wedge's critical taper comes from the biaxial test of its own preparation."""
 
     def __init__(self, items):
         self.items = items
 
-    def _group(self, packing, mu):
-        return [it for it in self.items if it["packing"] == packing and same(it["mu"], mu)]
+    def _group(self, packing, mu, prep):
+        return [it for it in self.items
+                if it["packing"] == packing and same(it["mu"], mu) and same_preparation(it["prep"], prep)]
 
-    def phi(self, packing, mu, which):
-        return mean_sd([it["phi_" + which] for it in self._group(packing, mu)])[0]
+    def phi(self, packing, mu, prep, which):
+        return mean_sd([it["phi_" + which] for it in self._group(packing, mu, prep)])[0]
 
-    def taper(self, packing, mu, mu_b, which):
-        g = self._group(packing, mu)
+    def taper(self, packing, mu, prep, mu_b, which):
+        g = self._group(packing, mu, prep)
         return mean_sd([biaxial_taper(it, mu_b, which) for it in g])[0] if g else NAN
 
 
@@ -663,7 +680,7 @@ class Bulk:
 def load_singly(run):
     s = run.summary
     return dict(run=run, name=run.name, packing=str(run.value("particles.packing", "?")),
-                mu=fnum(run.value("contact.mu")), mu_b=fnum(run.value("singly.mu_b")),
+                mu=fnum(run.value("contact.mu")), mu_b=fnum(run.value("singly.mu_b")), prep=preparation(run),
                 h0=fnum(run.value("layer.thickness", 10.0)), d_max=fnum(run.value("particles.d_max", 1.0)),
                 steady=s.get("taper_steady_deg", NAN), steady_sd=s.get("taper_steady_sd_deg", NAN),
                 final=s.get("taper_final_deg", NAN), front=s.get("taper_front_final_deg", NAN),
@@ -730,17 +747,18 @@ def chart_singly_taper(items, path, bulk=None):
         x0, x1 = 1.03 * s_max, 1.16 * s_max
         margin = False
         labels = []  # (y, text, colour), placed apart at the end
-        for (mu, mu_b) in sorted({(it["mu"], it["mu_b"]) for it in sel}):
+        for (mu, mu_b, prep) in sorted({(it["mu"], it["mu_b"], it["prep"]) for it in sel}):
             c = mu_colour(mu, mus)
             _, marker = mu_b_style(mu_b, mu_bs)
             if bulk is not None:
                 for which, ls in (("peak", "--"), ("residual", (0, (1, 1.5)))):
-                    v = bulk.taper(packing, mu, mu_b, which)
+                    v = bulk.taper(packing, mu, prep, mu_b, which)
                     if finite(v):
                         margin = True
                         ax.plot([x0, x1], [v, v], linestyle=ls, color=c, lw=1.8)
                         ax.plot([x1], [v], marker=marker, color=c, ms=5, mfc="white")
-                        labels.append((v, "μ %g, μb %g, %s %.1f°" % (mu, mu_b, "peak" if which == "peak" else "res.", v),
+                        labels.append((v, "μ %g, μb %g%s, %s %.1f°" % (mu, mu_b, preparation_text(prep),
+                                                                     "peak" if which == "peak" else "res.", v),
                                        c if c != "0.82" else "0.5"))
             v = thesis_taper(packing, mu, mu_b)
             if finite(v):
@@ -876,8 +894,9 @@ def singly_rows(items, bulk):
     rows = []
     for it in items:
         p, mu, mb = it["packing"], it["mu"], it["mu_b"]
-        b = (bulk.phi(p, mu, "peak"), bulk.phi(p, mu, "residual"), bulk.taper(p, mu, mb, "peak"),
-             bulk.taper(p, mu, mb, "residual")) if bulk is not None else (NAN,) * 4
+        prep = it["prep"]
+        b = (bulk.phi(p, mu, prep, "peak"), bulk.phi(p, mu, prep, "residual"), bulk.taper(p, mu, prep, mb, "peak"),
+             bulk.taper(p, mu, prep, mb, "residual")) if bulk is not None else (NAN,) * 4
         rows.append([it["name"], p, mu, mb, it["steady"], it["steady_sd"], it["final"], it["front"], it["back"]]
                     + list(b) + [thesis_taper(p, mu, mb)])
     return rows
@@ -913,9 +932,11 @@ def make_singly(paths, out_dir, bulk_paths=None):
     bulk = None
     if bulk_paths:
         bulk = Bulk([load_biaxial(r) for r in oio.collect_runs(bulk_paths, "biaxial")])
-        missing = sorted({(it["packing"], it["mu"]) for it in items if not bulk._group(it["packing"], it["mu"])})
-        for p, mu in missing:
-            oio.warn("no biaxial run of %s, contact mu %g among --bulk: no critical taper for it" % (p, mu))
+        missing = sorted({(it["packing"], it["mu"], it["prep"]) for it in items
+                          if not bulk._group(it["packing"], it["mu"], it["prep"])})
+        for p, mu, prep in missing:
+            oio.warn("no biaxial run of %s, contact mu %g%s among --bulk: no critical taper for it"
+                     % (p, mu, preparation_text(prep)))
     os.makedirs(out_dir, exist_ok=True)
     written = []
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -176,10 +176,10 @@ def make_repose_run(folder, packing, mu, angle, variant="slump", with_profile=Tr
                         h0=size, experiment="repose")
 
 
-def make_singly_run(folder, packing, mu, mu_b, steady, with_h5=False, h0=10.0, wedge_angle=10.0):
+def make_singly_run(folder, packing, mu, mu_b, steady, with_h5=False, h0=10.0, wedge_angle=10.0, extra=None):
     os.makedirs(folder)
     write_config(os.path.join(folder, "config.toml"), "singly_vergent", packing, mu,
-                 {"singly.mu_b": mu_b, "singly.shortening": 2.0})
+                 {"singly.mu_b": mu_b, "singly.shortening": 2.0, **(extra or {})})
     n = 21
     s = np.linspace(0, 2.0, n)
     taper = np.where(s < 0.4, np.nan, steady + 2.0 * np.sin(7 * s))
@@ -228,9 +228,10 @@ def biaxial_summary(phi_peak, phi_res, tapers=True):
     return v
 
 
-def make_biaxial_run(folder, packing, mu, phi_peak, phi_res, tapers=True):
+def make_biaxial_run(folder, packing, mu, phi_peak, phi_res, tapers=True, extra=None):
     os.makedirs(folder)
-    write_config(os.path.join(folder, "config.toml"), "biaxial", packing, mu, {"biaxial.strain_end": 0.2})
+    write_config(os.path.join(folder, "config.toml"), "biaxial", packing, mu,
+                 {"biaxial.strain_end": 0.2, **(extra or {})})
     rows = [[0, 0.0, 0, 0.0, 0.0, 5.0, 5.0, float("nan")], [10, 1.0, 0, 0.0, 0.0, 5.0, 5.0, 0.0]]
     for i, e in enumerate(np.linspace(0.0, 0.2, 21)):
         phi = phi_peak * min(1.0, e / 0.03) if e <= 0.03 else phi_res + (phi_peak - phi_res) * math.exp(-(e - 0.03) / 0.03)
@@ -474,6 +475,23 @@ class SinglyChartsTest(unittest.TestCase):
             md = f.read()
         self.assertIn("| 11.75 |", md)
         self.assertIn("%.2f ± 1.25" % self.steady[c["run"]], md)
+
+    def test_critical_taper_from_the_biaxial_test_of_the_same_preparation(self):
+        # A wedge of a rained layer (settle.mu 0.3) beside biaxial tests of the default
+        # preparation and of the rain: its critical taper comes from the rain's bulk friction.
+        rain = {"particles.placement": "rain", "settle.mu": 0.3}
+        wedge, default, rained = (os.path.join(self.tmp, n) for n in ("wedge_rain", "bx_default", "bx_rain"))
+        make_singly_run(wedge, "random_clusters", 0.3, 0.2, 5.0, extra=rain)
+        make_biaxial_run(default, "random_clusters", 0.3, 35.6, 24.6, tapers=False)
+        make_biaxial_run(rained, "random_clusters", 0.3, 29.4, 25.8, tapers=False, extra=rain)
+        out = os.path.join(self.tmp, "prep_charts")
+        gc.make_singly([wedge], out, [default, rained])
+        row = read_csv_table(os.path.join(out, "singly_table.csv"))[0]
+        self.assertAlmostEqual(float(row["phi_peak_deg"]), 29.4)
+        self.assertAlmostEqual(float(row["critical_taper_residual_deg"]), oio.critical_taper_deg(25.8, 0.2))
+        gc.make_singly([wedge], out, [default])  # no biaxial test of its preparation: none
+        row = read_csv_table(os.path.join(out, "singly_table.csv"))[0]
+        self.assertTrue(math.isnan(float(row["phi_peak_deg"])))
 
     def test_without_bulk(self):
         gc.make_singly([self.sweep], self.out)
