@@ -110,8 +110,8 @@ void place_random_discs(World& w, const PackingSpec& s, Random& rng) {
   // stacked columns (which settle into a loose, column-jammed packing). Lattice: the lattice
   // points themselves, d_max apart.
   const bool lattice = s.placement == Placement::Lattice;
-  const Slots slots(s.placement, s.length, lattice ? s.d_max : s.d_max * 1.25);
-  const double cell = s.d_max * 1.25;
+  const double cell = lattice ? s.d_max : s.d_max * 1.25;
+  const Slots slots(s.placement, s.length, cell);
   for (std::size_t k = 0; k < count; ++k) {
     const double r = 0.5 * rng.uniform(s.d_min, s.d_max);
     const double play = lattice ? 0.0 : 0.5 * cell - r;
