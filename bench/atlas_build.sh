@@ -24,7 +24,7 @@ if [ -z "$run" ]; then  # a small wedge with the output count of a real run, and
     --set output.progress=never 2>/dev/null
   $orogen render "$run" --width 800 >/dev/null
   $orogen render "$run" --width 800 --color field:max_rel_disp --frames-dir frames_faults >/dev/null
-  /usr/bin/python3 python/wedge_charts.py "$run" --out "$run/charts" >/dev/null
+  python3 -m orogen.charts.wedge "$run" --out "$run/charts" >/dev/null
 fi
 mkdir -p "$work/runs"
 for i in $(seq -w 1 "$n"); do

@@ -8,6 +8,7 @@ packages=(build-essential cmake ninja-build pkg-config libgtest-dev libtomlplusp
           python3-scipy python3-pandas libopenmpi-dev openmpi-bin  # the MPI pair: optional, `orogen ensemble` under mpirun
           python3-paraview xvfb xauth  # the ParaView test (pvpython renders through X: xvfb-run)
           pybind11-dev python3-pybind11 python3-pytest  # the Python module `orogen` (docs/python.md) and its tests
+          python3-pip python3-setuptools python3-wheel  # scripts/install-python.sh installs the package orogen
           chromium)  # the atlas's browser test (tests/browser: puppeteer-core drives this chromium)
 # node and npm for that test: Debian's, unless a node of another origin (NodeSource's nodejs,
 # which ships npm and conflicts with Debian's npm) is already there.

@@ -8,11 +8,11 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release
-scripts/install-python.sh   # import orogen from any folder (docs/python.md)
+scripts/install-python.sh   # the Python package orogen: charts, statistics, atlas (docs/python.md)
 rm -rf runs/main
 build/release/orogen run --out runs/main
 build/release/orogen render runs/main
 build/release/orogen render runs/main --color field:max_rel_disp --frames-dir frames_faults ||
   echo "(fault colouring skipped)"
-/usr/bin/python3 python/wedge_charts.py runs/main --out runs/main/charts
+build/release/orogen charts runs/main   # python3 -m orogen.charts.wedge runs/main --out runs/main/charts
 echo "main job done: runs/main (series.csv, snapshots.h5, run.pvd, frames/, animation.mp4, animation.gif, charts/)"

@@ -8,6 +8,7 @@
 
 #include "commands/export_command.hpp"
 #include "commands/render_command.hpp"
+#include "commands/charts_command.hpp"
 #include "commands/report_command.hpp"
 #include "config/config.hpp"
 #include "config/schema.hpp"
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
       ->check(not_empty)
       ->check(count_in(1, orogen::kMaxThreads));
   ensemble_cmd->add_flag("--dry-run", ensemble.dry_run, "check the ensemble, list its members; run nothing");
-  ensemble_cmd->add_flag("--no-stats", ensemble.no_stats, "run the members only (python/ensemble_stats.py DIR later)");
+  ensemble_cmd->add_flag("--no-stats", ensemble.no_stats, "run the members only (python3 -m orogen.stats DIR later)");
 
   orogen::ExportCommandOptions export_opt;
   std::string export_dir, export_to;
@@ -164,6 +165,13 @@ int main(int argc, char** argv) {
   report_cmd->add_option("dir", report_dir, "folder holding runs, sweeps and ensembles (searched at any depth)")
       ->required();
   report_cmd->add_option("--out,-o", report_out, "site folder (default DIR/atlas); open SITE/index.html");
+
+  orogen::ChartsOptions charts;
+  std::string charts_dir, charts_out;
+  auto* charts_cmd = app.add_subcommand("charts", "draw the charts of a run, sweep or ensemble folder, chosen by "
+                                                  "what it holds (python3 -m orogen.charts; docs/python.md)");
+  charts_cmd->add_option("dir", charts_dir, "a run, sweep or ensemble folder")->required();
+  charts_cmd->add_option("--out,-o", charts_out, "folder for the charts (default DIR/charts)");
 
   bool markdown = false;
   auto* config_cmd = app.add_subcommand("config", "print the default configuration (every key, documented)");
@@ -233,6 +241,11 @@ int main(int argc, char** argv) {
     report.dir = report_dir;
     report.out = report_out;
     return orogen::report_command(report);
+  }
+  if (*charts_cmd) {
+    charts.dir = charts_dir;
+    charts.out = charts_out;
+    return orogen::charts_command(charts);
   }
   if (*analyze_cmd) {
     analyze.dir = analyze_dir;

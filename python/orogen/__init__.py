@@ -10,7 +10,8 @@ xarray and h5py; the rest needs the compiled engine _orogen (python/bindings), i
 first use, so results can be read where the engine was never built.
 """
 
-from .results import RunFolder, open_run, read_csv
+from .results import RunFolder, open_run
+from .tables import read_csv
 
 _ENGINE = {
     "ConfigError": ("config", "ConfigError"), "load_config": ("config", "load_config"),

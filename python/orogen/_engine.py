@@ -1,8 +1,9 @@
 """Finds and imports the compiled engine `_orogen` (built by CMake into build/<preset>/python).
 
-Looked for, in order: the folder named by $OROGEN_BUILD (a build folder or its python/), the
-interpreter's own path (a .pth file or PYTHONPATH), then this repository's build/release and
-build/debug. So `import orogen` needs only python/ on the path (scripts/install-python.sh).
+Looked for, in order: the folder named by $OROGEN_BUILD (a build folder or its python/), inside
+the package (where scripts/install-python.sh installs it), the interpreter's own path
+(PYTHONPATH), then the build/release and build/debug of the source tree this package sits in.
+So from a source tree `import orogen` needs only python/ on the path.
 """
 
 import importlib
@@ -14,19 +15,21 @@ _REPO = Path(__file__).resolve().parents[2]
 
 
 def _candidates():
-    env = os.environ.get("OROGEN_BUILD")
-    if env:
-        yield Path(env) / "python"
-        yield Path(env)
     for preset in ("release", "debug"):
         yield _REPO / "build" / preset / "python"
 
 
 def _load():
-    try:
-        return importlib.import_module("_orogen")
-    except ImportError:
-        pass
+    env = os.environ.get("OROGEN_BUILD")
+    for folder in ([Path(env) / "python", Path(env)] if env else []):
+        if any(folder.glob("_orogen*.so")):
+            sys.path.insert(0, str(folder))
+            return importlib.import_module("_orogen")
+    for name in (f"{__package__}._orogen", "_orogen"):
+        try:
+            return importlib.import_module(name)
+        except ImportError:
+            pass
     for folder in _candidates():
         if any(folder.glob("_orogen*.so")):
             sys.path.insert(0, str(folder))

@@ -1,8 +1,8 @@
 """The complete outputs of snapshots.h5, one at a time (h5py and numpy only).
 
 The package's one low-level snapshot reader: orogen.snapshots builds its lazy xarray Dataset
-on it, and the chart scripts read their frames through it (python/orogen_io.py read_frame,
-wedge_charts.py). Output k is the group output_NNNNNN of snapshots.h5: in a run folder an
+on it, and the charts read their frames through it (orogen.folders.read_frame,
+orogen.charts.wedge). Output k is the group output_NNNNNN of snapshots.h5: in a run folder an
 external link to snapshots/output_NNNNNN.h5, which HDF5 follows by itself, in the chart tests'
 fixtures a group written there directly; reading through snapshots.h5 covers both. Only the
 first n_outputs groups are complete; those past it (left by a killed run) are never opened.

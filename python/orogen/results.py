@@ -6,14 +6,15 @@
     r.series_dataset()                # the same as an xarray Dataset over `output`, units as attrs
     r.snapshots                       # xarray Dataset (output x particle), read lazily
     r.output(-1)                      # one output, `particle` = stable disc id
-    r.removals, r.summary, r.analysis # removals.csv, summary.csv, analysis.h5 (None where absent)
+    r.removals, r.analysis            # removals.csv (DataFrame), analysis.h5 (None where absent)
+    r.summary                         # summary.csv's row: {column: float}, {} before the end
+    r.value("contact.mu"), r.file("snapshots.h5"), r.series_columns["H"]   # what charts use
 
-The CSV readers need pandas only (h5py is imported when snapshots are read), so the chart
-scripts read tables through read_csv on any machine with Debian's python3-pandas.
+Tables need pandas only (h5py is imported when snapshots are read, xarray for the Datasets).
 """
 
-import io
-import re
+import math
+import os
 import tomllib
 from functools import cached_property
 from pathlib import Path
@@ -21,66 +22,61 @@ from pathlib import Path
 import pandas as pd
 import xarray as xr
 
-
-_COLUMN_DOC = re.compile(r"^#\s*(\S+):\s*(.*?)\s*(?:\[([^\]]*)\])?\s*$")
-
-
-def read_csv(path):
-    """A series-format CSV (`# name: meaning [unit]` lines, a header row, rows; `nan` for NaN)
-    as (DataFrame, {column: unit}, {column: meaning})."""
-    return (read_complete_rows(path),) + column_docs(path)
-
-
-def column_docs(path):
-    """The `# name: meaning [unit]` lines above a CSV's header as ({column: unit}, {column: meaning})."""
-    units, meanings = {}, {}
-    with open(path, encoding="utf-8") as f:
-        for line in f:
-            if not line.startswith("#"):
-                break
-            m = _COLUMN_DOC.match(line.strip())
-            if m and " " not in m.group(1):
-                meanings[m.group(1)] = m.group(2)
-                if m.group(3) is not None:
-                    units[m.group(1)] = m.group(3)
-    return units, meanings
-
-
-def read_complete_rows(path):
-    """The rows of a CSV with as many fields as its header, as a DataFrame.
-
-    The program rewrites its CSVs atomically, but a file can still end in a cut row (copied or
-    synced while being written, or written by another tool), and a cut row must not pass for a
-    row with missing values: pandas pads a short row with NaN, so a text-only read first (the
-    python engine gives None for a missing field, '' for an empty one) tells which rows are
-    whole, and only those are parsed (so an integer column stays integer). Rows with too many
-    fields are skipped; empty fields and `nan` are NaN; floats parse as Python's float()."""
-    options = dict(comment="#", skip_blank_lines=True, on_bad_lines="skip")
-    text = pd.read_csv(path, engine="python", dtype=str, na_filter=False, **options)
-    whole = text.notna().all(axis=1)
-    source = path if whole.all() else io.StringIO(text[whole].to_csv(index=False))
-    return pd.read_csv(source, float_precision="round_trip", **options)
+from .tables import read_complete_rows, read_csv, read_summary, read_table, to_float
 
 
 class RunFolder:
-    """A run folder written by `orogen run` (or orogen.run); attributes read on first use."""
+    """A run folder written by `orogen run` (or orogen.run); attributes read on first use.
 
-    def __init__(self, path):
-        self.path = Path(path)
-        if not (self.path / "config.toml").is_file():
+    The package's one run-folder model: the Python API, the charts, the statistics and the
+    atlas all read runs through it. A run of a sweep may also carry its row of the sweep's
+    results.csv (`results_row`, the swept keys `swept`): its summary and swept values then
+    come from that row where the folder lacks them (or where no folder is left, path None)."""
+
+    def __init__(self, path, name=None, results_row=None, swept=()):
+        self.path = Path(path) if path else None
+        self.name = name or (os.path.basename(os.path.normpath(path)) if path else "run")
+        self.results_row = results_row or {}
+        self.swept = tuple(swept)
+        if self.path and not results_row and not (self.path / "config.toml").is_file():
             raise FileNotFoundError(f"{self.path}: no run there (config.toml is missing)")
 
     def __repr__(self):
         return f"<orogen run {self.path}: {self.experiment}, {len(self.series)} outputs>"
 
+    @property
+    def dir(self):
+        """The folder as text (None for a sweep's row without a folder)."""
+        return os.path.abspath(self.path) if self.path else None
+
+    def file(self, name):
+        """Path (text) of a file in the run folder, or None when it is not there."""
+        path = self.path / name if self.path else None
+        return str(path) if path and path.is_file() else None
+
     @cached_property
     def config(self):
-        with open(self.path / "config.toml", "rb") as f:
+        """config.toml as a dict ({} where there is none)."""
+        path = self.file("config.toml")
+        if not path:
+            return {}
+        with open(path, "rb") as f:
             return tomllib.load(f)
 
     @property
     def experiment(self):
-        return self.config["run"]["experiment"]
+        return self.value("run.experiment")
+
+    def value(self, key, default=None):
+        """A dotted configuration key ("contact.mu"), from config.toml or else the sweep's
+        column of that key; default where neither has it."""
+        v = config_value(self.config, key)
+        if v is None and self.results_row.get(key, "") != "":
+            text = self.results_row[key]
+            v = to_float(text)
+            if math.isnan(v):
+                v = text
+        return default if v is None else v
 
     @cached_property
     def _series(self):
@@ -122,13 +118,32 @@ class RunFolder:
     def removals(self):
         """removals.csv as a DataFrame (empty where nothing was removed)."""
         path = self.path / "removals.csv"
-        return pd.read_csv(path, comment="#") if path.exists() else pd.DataFrame()
+        return read_complete_rows(path) if path.exists() else pd.DataFrame()
 
     @cached_property
+    def series_columns(self):
+        """series.csv as {column: float array} ({} where there is none): what the charts draw."""
+        path = self.file("series.csv")
+        return read_table(path)[0] if path else {}
+
+    @cached_property
+    def _summary(self):
+        path = self.file("summary.csv")
+        if path:
+            return read_summary(path)
+        # A sweep's results.csv has the summary's columns too (after the fixed ones).
+        return {k: to_float(v) for k, v in self.results_row.items()
+                if k not in ("name", "exit_status", "render_status") and k not in self.swept and v != ""}, {}
+
+    @property
     def summary(self):
-        """summary.csv's one row as a dict (None before the run finished)."""
-        path = self.path / "summary.csv"
-        return read_csv(path)[0].iloc[0].to_dict() if path.exists() else None
+        """summary.csv's one row as {column: float} ({} before the run finished)."""
+        return self._summary[0]
+
+    @property
+    def summary_descriptions(self):
+        """{column: meaning [unit]} of summary.csv."""
+        return self._summary[1]
 
     @cached_property
     def analysis(self):
@@ -140,3 +155,13 @@ class RunFolder:
 def open_run(path):
     """The run folder at `path` (RunFolder)."""
     return RunFolder(path)
+
+
+def config_value(config, key, default=None):
+    """A dotted key ("contact.mu") of a configuration dict."""
+    node = config
+    for part in key.split("."):
+        if not isinstance(node, dict) or part not in node:
+            return default
+        node = node[part]
+    return node

@@ -1,14 +1,12 @@
 #include "commands/report_command.hpp"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <iostream>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "run/run_folder.hpp"
+#include "util/python_module.hpp"
 
 namespace orogen {
 
@@ -37,28 +35,13 @@ int report_command(const ReportOptions& options) {
     std::cerr << "error: " << error << "\n";
     return 2;
   }
-  const fs::path package = fs::path(OROGEN_SOURCE_DIR) / "python" / "atlas";
-  const char* python = "/usr/bin/python3";
-  if (!fs::exists(python) || !fs::exists(package / "__main__.py")) {
-    std::cerr << "error: the atlas needs " << python << " and " << package.string() << " (the source tree this "
-              << "orogen was built from)\n";
+  if (const std::string why = python_module_unavailable("orogen.atlas"); !why.empty()) {
+    std::cerr << "error: the atlas needs " << why << "\n";
     return 1;
   }
-  const std::string p = package.string(), d = options.dir.string(), o = options.out.string();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (o.empty()) ::execl(python, python, p.c_str(), d.c_str(), static_cast<char*>(nullptr));
-    else ::execl(python, python, p.c_str(), d.c_str(), "--out", o.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  if (pid < 0) {
-    std::cerr << "error: cannot start " << python << "\n";
-    return 1;
-  }
-  int raw = 0;
-  while (::waitpid(pid, &raw, 0) < 0 && errno == EINTR) {
-  }
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 1;
+  std::vector<std::string> args = {options.dir.string()};
+  if (!options.out.empty()) args.insert(args.end(), {"--out", options.out.string()});
+  return run_python_module("orogen.atlas", args);
 }
 
 }  // namespace orogen

@@ -4,7 +4,6 @@
 #include <cerrno>
 #include <fmt/format.h>
 #include <sys/file.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,6 +18,7 @@
 #include "sweep/sweep_log_tail.hpp"
 #include "sweep/sweep_report.hpp"
 #include "sweep/sweep_run_state.hpp"
+#include "util/python_module.hpp"
 
 namespace fs = std::filesystem;
 
@@ -66,27 +66,14 @@ void write_members_csv(const fs::path& out, const EnsemblePlan& plan, const std:
   write_file_atomically(out / "members.csv", text);
 }
 
-// Runs /usr/bin/python3 python/ensemble_stats.py DIR; its output goes to our stderr.
+// Runs `python3 -m orogen.stats DIR` (the package's ensemble statistics); its output goes to our stderr.
 int run_statistics(const fs::path& out) {
-  const fs::path script = fs::path(OROGEN_SOURCE_DIR) / "python" / "ensemble_stats.py";
-  const char* python = "/usr/bin/python3";
-  if (!fs::exists(python) || !fs::exists(script)) {
-    std::cerr << fmt::format("statistics skipped: {} or {} is missing (make them later: python/ensemble_stats.py {})\n",
-                             python, script.string(), out.string());
+  if (const std::string why = python_module_unavailable("orogen.stats"); !why.empty()) {
+    std::cerr << fmt::format("statistics skipped: {} (make them later: python3 -m orogen.stats {})\n", why,
+                             out.string());
     return 1;
   }
-  const std::string s = script.string(), d = out.string();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::dup2(STDERR_FILENO, STDOUT_FILENO);
-    ::execl(python, python, s.c_str(), d.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  if (pid < 0) return 1;
-  int raw = 0;
-  while (::waitpid(pid, &raw, 0) < 0 && errno == EINTR) {
-  }
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 1;
+  return run_python_module("orogen.stats", {out.string()}, true);
 }
 
 struct Work {

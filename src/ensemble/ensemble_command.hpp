@@ -2,7 +2,7 @@
 // `orogen ensemble ENSEMBLE.toml --out DIR`: runs every member of an ensemble file (a preset
 // over seeds and/or named variants, ensemble_plan.hpp) as an ordinary run in DIR/members/NAME,
 // several at once (and spread over the ranks under mpirun), then computes the statistics
-// (python/ensemble_stats.py) into DIR/aggregate and DIR/results.csv, .md. Started again, it
+// (python3 -m orogen.stats) into DIR/aggregate and DIR/results.csv, .md. Started again, it
 // does only what is left (docs/ensembles.md).
 #include <filesystem>
 

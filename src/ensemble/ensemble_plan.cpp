@@ -300,7 +300,7 @@ EnsemblePlan load_ensemble(const fs::path& file) {
 std::string plan_to_toml(const EnsemblePlan& plan) {
   // Written by hand (not toml++'s printer) so that the text is the same on every build.
   std::string out = "# The plan of an Orogen ensemble, written by `orogen ensemble` for the statistics\n"
-                    "# (python/ensemble_stats.py) and for reading; docs/ensembles.md.\n\n[ensemble]\n";
+                    "# (python3 -m orogen.stats) and for reading; docs/ensembles.md.\n\n[ensemble]\n";
   out += fmt::format("file = {}  # the ensemble file\n", format_value(ConfigValue{plan.file.string()}));
   out += fmt::format("title = {}\n", format_value(ConfigValue{plan.title}));
   out += "\n[stats]\n";

@@ -23,7 +23,7 @@ struct EnsembleMember {
   std::string resolved_toml;           // its fully resolved configuration (Config::to_toml)
 };
 
-// Settings of the statistics (python/ensemble_stats.py), checked here so that a typo stops
+// Settings of the statistics (python3 -m orogen.stats), checked here so that a typo stops
 // the ensemble before it runs rather than after.
 struct EnsembleStats {
   double s_min = 2.0;                     // power-law fits over S > s_min [h0]

@@ -20,6 +20,8 @@ import unittest
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BINARY = os.environ.get("OROGEN_BINARY", os.path.join(ROOT, "build", "release", "orogen"))
 BROWSER = os.path.join(ROOT, "tests", "browser")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from source_tree import module_command  # noqa: E402
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 NODE = shutil.which("node") or "/usr/bin/node"
 ARTEFACTS = os.environ.get("ATLAS_ARTEFACTS") or tempfile.mkdtemp(prefix="atlas_artefacts_")
@@ -42,7 +44,7 @@ def draw_run(run):
     sh(BINARY, "render", run, "--width", "480", "--fps", "6")
     sh(BINARY, "render", run, "--width", "480", "--fps", "6", "--color", "field:max_rel_disp",
        "--frames-dir", "frames_faults")
-    sh("/usr/bin/python3", os.path.join(ROOT, "python", "wedge_charts.py"), run, "--out", os.path.join(run, "charts"))
+    sh(*module_command("orogen.charts.wedge", run, "--out", os.path.join(run, "charts")))
 
 
 TMP = RUNS = SITE = FIRST = None
@@ -58,7 +60,7 @@ def setUpModule():
     with open(plan, "w") as f:
         f.write(ENSEMBLE)
     sh(BINARY, "ensemble", plan, "--out", os.path.join(RUNS, "tiny_ensemble"), "--jobs", "2", "--threads", "1")
-    sh("/usr/bin/python3", os.path.join(ROOT, "python", "ensemble_charts.py"), os.path.join(RUNS, "tiny_ensemble"))
+    sh(*module_command("orogen.charts.ensemble", os.path.join(RUNS, "tiny_ensemble")))
     for seed in ("seed1", "seed2", "seed3"):
         draw_run(os.path.join(RUNS, "tiny_ensemble", "members", seed))
     sweep = os.path.join(TMP, "tiny_sweep.toml")
@@ -72,8 +74,8 @@ def setUpModule():
     sh(BINARY, "run", "--out", eroding, "--threads", "1", "--set", "wedge.erosion_height=0.9",
        "--set", "output.progress=never", *sets)
     sh(BINARY, "analyze", eroding)
-    sh("/usr/bin/python3", os.path.join(ROOT, "python", "exhumation_charts.py"), eroding)
-    sh("/usr/bin/python3", os.path.join(ROOT, "python", "exhumation_frames.py"), eroding, "--width", "480", "--fps", "6")
+    sh(*module_command("orogen.charts.exhumation", eroding))
+    sh(*module_command("orogen.charts.exhumation_frames", eroding, "--width", "480", "--fps", "6"))
     draw_run(eroding)
     SITE = os.path.join(TMP, "site")
     FIRST = sh(BINARY, "report", RUNS, "--out", SITE)
@@ -142,7 +144,7 @@ class AtlasInChromium(unittest.TestCase):
 
     def test_4_vendored_plot_library_is_the_npm_package(self):
         for name in ("uPlot.iife.min.js", "uPlot.min.css"):
-            with open(os.path.join(ROOT, "python", "atlas", "vendor", name), "rb") as a, \
+            with open(os.path.join(ROOT, "python", "orogen", "atlas", "vendor", name), "rb") as a, \
                  open(os.path.join(BROWSER, "node_modules", "uplot", "dist", name), "rb") as b:
                 self.assertEqual(a.read(), b.read(), name)
 

@@ -6,8 +6,9 @@ import sys
 import tempfile
 import unittest
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
-from atlas import discover, run_info  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import source_tree  # noqa: E402,F401  (the package of this source tree)
+from orogen.atlas import discover, run_info  # noqa: E402
 
 
 def status_and_wall(log_lines):

@@ -1,4 +1,4 @@
-"""python/basal_traction.py (issue 38): what a wedge's bases transmit, read from the contact
+"""orogen.analysis.traction (issue 38): what a wedge's bases transmit, read from the contact
 forces of a short main-job wedge. The transmitted friction can never exceed the Coulomb limit
 of its base, and the contacts it counts as at the limit carry exactly mu fn. The pro plate is
 a Coulomb belt (wedge.traction_law = "spring"): the contacts below the limit stick to it, those
@@ -17,8 +17,9 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(ROOT, "python"))
-import basal_traction  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import source_tree  # noqa: E402,F401  (the package of this source tree)
+from orogen.analysis import traction as basal_traction  # noqa: E402
 
 BINARY = os.environ.get("OROGEN_BINARY", os.path.join(ROOT, "build", "release", "orogen"))
 

@@ -1,5 +1,5 @@
-"""Tests of the ensemble statistics (python/powerlaw.py, thrust_cycles.py, ensemble_stats.py,
-ensemble_charts.py) on synthetic data: docs/ensembles.md."""
+"""Tests of the ensemble statistics (orogen.analysis.powerlaw, orogen.analysis.cycles,
+orogen.stats, orogen.charts.ensemble) on synthetic data: docs/ensembles.md."""
 
 import csv
 import filecmp
@@ -15,11 +15,10 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 import ensemble_fixture  # noqa: E402
-import powerlaw  # noqa: E402
-import thrust_cycles  # noqa: E402
+from source_tree import module_command  # noqa: E402
+from orogen.analysis import cycles as thrust_cycles, powerlaw  # noqa: E402
 
 
 class PowerLawTest(unittest.TestCase):
@@ -93,7 +92,7 @@ class AggregateTest(unittest.TestCase):
         shutil.rmtree(self.tmp)
 
     def run_stats(self, folder):
-        return subprocess.run([sys.executable, os.path.join(ROOT, "python", "ensemble_stats.py"), folder],
+        return subprocess.run(module_command("orogen.stats", folder),
                               capture_output=True, text=True)
 
     def test_four_members_of_200_outputs_in_seconds_and_the_same_bytes_twice(self):
@@ -126,7 +125,7 @@ class AggregateTest(unittest.TestCase):
         for r in rows:
             self.assertAlmostEqual(float(r["ratio"]), float(r["H_mean"]) / float(r["H_simple"]), places=12)
         # Charts: one command, every figure.
-        r = subprocess.run([sys.executable, os.path.join(ROOT, "python", "ensemble_charts.py"), a],
+        r = subprocess.run(module_command("orogen.charts.ensemble", a),
                            capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
         charts = os.listdir(os.path.join(a, "aggregate", "charts"))

@@ -1,4 +1,4 @@
-"""Tests of python/orogen_analysis.py and python/exhumation_charts.py on a tiny eroding wedge
+"""Tests of orogen.analysis.exhumation and orogen.charts.exhumation on a tiny eroding wedge
 run analysed by `orogen analyze` (OROGEN_BINARY, set by CTest; skipped without it).
 
 Run from the repository root:
@@ -16,10 +16,10 @@ import numpy as np
 import xarray as xr
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(REPO, "python"))
-import orogen_analysis  # noqa: E402
-import exhumation_charts  # noqa: E402
-import exhumation_summary  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import source_tree  # noqa: E402,F401  (the package of this source tree)
+from orogen.analysis import exhumation as orogen_analysis, exhumation_summary  # noqa: E402
+from orogen.charts import exhumation as exhumation_charts  # noqa: E402
 
 BINARY = os.environ.get("OROGEN_BINARY", "")
 SMALL = ("layer.thickness=5 wedge.tile_length=4 wedge.retro_length=4 wedge.initial_active=4 wedge.window=3 "

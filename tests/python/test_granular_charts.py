@@ -1,10 +1,9 @@
-"""Tests of python/granular_charts.py and python/orogen_io.py on small synthetic run and sweep folders.
+"""Tests of orogen.charts.granular and orogen.folders on small synthetic run and sweep folders.
 
 Run from the repository root:  /usr/bin/python3 -m unittest -v tests/python/test_granular_charts.py
 """
 
 import csv
-import importlib.util
 import math
 import os
 import shutil
@@ -16,13 +15,12 @@ import unittest
 import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-SCRIPT = os.path.join(REPO, "python", "granular_charts.py")
-sys.path.insert(0, os.path.join(REPO, "python"))
-
-_spec = importlib.util.spec_from_file_location("granular_charts", SCRIPT)
-gc = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(gc)
-oio = gc.oio
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from source_tree import module_command  # noqa: E402
+from orogen import folders, tables  # noqa: E402
+from orogen.results import RunFolder  # noqa: E402
+from orogen.analysis import surface  # noqa: E402
+from orogen.charts import granular as gc  # noqa: E402
 
 try:
     import h5py
@@ -224,7 +222,7 @@ def biaxial_summary(phi_peak, phi_res, tapers=True):
     if tapers:
         for mb in (0.1, 0.2, 0.3):
             for which, phi in (("residual", phi_res), ("peak", phi_peak)):
-                v["taper_mub%g_%s_deg" % (mb, which)] = oio.critical_taper_deg(phi, mb)
+                v["taper_mub%g_%s_deg" % (mb, which)] = surface.critical_taper_deg(phi, mb)
     return v
 
 
@@ -271,19 +269,19 @@ def read_csv_table(path):
 
 class CriticalTaperTest(unittest.TestCase):
     def test_thesis_check_value(self):
-        alpha = oio.critical_taper(math.radians(30.0), math.radians(10.0))
+        alpha = surface.critical_taper(math.radians(30.0), math.radians(10.0))
         self.assertAlmostEqual(math.degrees(alpha), 3.44, delta=0.005)
-        self.assertAlmostEqual(oio.critical_taper_deg(30.0, math.tan(math.radians(10.0))), 3.4365, delta=1e-3)
+        self.assertAlmostEqual(surface.critical_taper_deg(30.0, math.tan(math.radians(10.0))), 3.4365, delta=1e-3)
 
     def test_no_taper_when_base_not_weaker(self):
         with self.assertRaises(ValueError):
-            oio.critical_taper(math.radians(15.0), math.radians(16.0))
-        self.assertTrue(math.isnan(oio.critical_taper_deg(15.0, 0.3)))  # atan(0.3) = 16.7 deg
-        self.assertTrue(math.isnan(oio.critical_taper_deg(float("nan"), 0.1)))
+            surface.critical_taper(math.radians(15.0), math.radians(16.0))
+        self.assertTrue(math.isnan(surface.critical_taper_deg(15.0, 0.3)))  # atan(0.3) = 16.7 deg
+        self.assertTrue(math.isnan(surface.critical_taper_deg(float("nan"), 0.1)))
 
     def test_weaker_wedge_steeper(self):
-        self.assertGreater(oio.critical_taper_deg(20.0, 0.1), oio.critical_taper_deg(30.0, 0.1))
-        self.assertGreater(oio.critical_taper_deg(30.0, 0.3), oio.critical_taper_deg(30.0, 0.1))
+        self.assertGreater(surface.critical_taper_deg(20.0, 0.1), surface.critical_taper_deg(30.0, 0.1))
+        self.assertGreater(surface.critical_taper_deg(30.0, 0.3), surface.critical_taper_deg(30.0, 0.1))
 
 
 class ReadersTest(unittest.TestCase):
@@ -301,17 +299,17 @@ class ReadersTest(unittest.TestCase):
              lambda d: make_repose_run(d, "hexagonal", 0.3, 40.0, with_h5=False)),
             ("001_packing=hexagonal_mu=0.1", {"particles.packing": "hexagonal", "contact.mu": 0.1}, None, None),
         ], ["particles.packing", "contact.mu"])
-        rows, header, desc = oio.read_results(os.path.join(sweep, "results.csv"))
+        rows, header, desc = tables.read_results(os.path.join(sweep, "results.csv"))
         self.assertEqual(header[:4], ["name", "particles.packing", "contact.mu", "exit_status"])
         self.assertEqual(rows[0]["note"], "a, \"quoted\" text")
         self.assertEqual(desc["contact.mu"], "swept configuration key")
-        runs = oio.collect_runs([sweep], "repose")  # the unfinished run is left out
+        runs = folders.collect_runs([sweep], "repose")  # the unfinished run is left out
         self.assertEqual([r.name for r in runs], ["000_packing=hexagonal_mu=0.3"])
         self.assertAlmostEqual(runs[0].value("contact.mu"), 0.3)
         self.assertAlmostEqual(runs[0].summary["angle_deg"], 40.0)
         # results.csv alone (no run folders): values from the table, swept keys not in the summary.
         shutil.rmtree(os.path.join(sweep, "runs"))
-        runs = oio.collect_runs([os.path.join(sweep, "results.csv")], "repose")
+        runs = folders.collect_runs([os.path.join(sweep, "results.csv")], "repose")
         self.assertEqual(runs[0].value("particles.packing"), "hexagonal")
         self.assertAlmostEqual(runs[0].summary["angle_deg"], 40.0)
         self.assertNotIn("contact.mu", runs[0].summary)
@@ -319,10 +317,10 @@ class ReadersTest(unittest.TestCase):
     def test_wrong_experiment_is_an_error(self):
         run = os.path.join(self.tmp, "bx")
         make_biaxial_run(run, "random_discs", 0.3, 25.0, 20.0)
-        with self.assertRaises(oio.RunError):
-            oio.collect_runs([run], "repose")
-        with self.assertRaises(oio.RunError):
-            oio.collect_runs([self.tmp], "repose")  # a folder of runs, none of them repose
+        with self.assertRaises(folders.RunError):
+            folders.collect_runs([run], "repose")
+        with self.assertRaises(folders.RunError):
+            folders.collect_runs([self.tmp], "repose")  # a folder of runs, none of them repose
 
     def test_surface_and_last_frame(self):
         if h5py is None:
@@ -330,11 +328,11 @@ class ReadersTest(unittest.TestCase):
         run = os.path.join(self.tmp, "r")
         make_repose_run(run, "random_discs", 0.3, 30.0)
         path = os.path.join(run, "snapshots.h5")
-        frame = oio.read_last_frame(path)
+        frame = folders.read_last_frame(path)
         self.assertEqual(frame["output"], 1)  # the incomplete third group is ignored
         self.assertEqual(frame["file_attrs"]["experiment"], "repose")
-        first = oio.read_frame(path, 0)
-        x, h = oio.surface_columns(first["x"], first["y"], first["radius"], 0.0, 20.0)
+        first = folders.read_frame(path, 0)
+        x, h = surface.surface_columns(first["x"], first["y"], first["radius"], 0.0, 20.0)
         self.assertAlmostEqual(x[1] - x[0], 1.15)
         self.assertEqual(len(h), 18)  # ceil(20 / 1.15)
         self.assertTrue(np.allclose(h[:-1], 20.0))
@@ -342,13 +340,13 @@ class ReadersTest(unittest.TestCase):
 
     def test_fit_line(self):
         x = np.linspace(0, 10, 11)
-        fit = oio.fit_line(x, 5.0 - 0.5 * x)
+        fit = surface.fit_line(x, 5.0 - 0.5 * x)
         self.assertAlmostEqual(fit["slope"], -0.5)
         self.assertAlmostEqual(fit["r2"], 1.0)
         self.assertAlmostEqual(fit["concavity"], 0.0, places=9)
-        fit = oio.fit_line(x, 10.0 - np.sqrt(x + 1) * 3)  # steep top, flatter foot: concave
+        fit = surface.fit_line(x, 10.0 - np.sqrt(x + 1) * 3)  # steep top, flatter foot: concave
         self.assertGreater(fit["concavity"], 0.0)
-        self.assertIsNone(oio.fit_line([1, 2], [1, 2]))
+        self.assertIsNone(surface.fit_line([1, 2], [1, 2]))
 
 
 class ReposeChartsTest(unittest.TestCase):
@@ -400,7 +398,7 @@ class ReposeChartsTest(unittest.TestCase):
     def test_profile_computed_from_snapshots(self):
         if h5py is None:
             self.skipTest("h5py not installed")
-        prof = gc.repose_profile(oio.Run(self.lone))
+        prof = gc.repose_profile(RunFolder(self.lone))
         self.assertEqual(prof["source"], "computed from snapshots.h5")
         self.assertAlmostEqual(gc.fit_angle(prof["fit"]), 25.0, delta=2.0)
         self.assertTrue(np.all(prof["height"][prof["fitted"]] > 2.0))  # above fixed_height + d_max
@@ -464,10 +462,10 @@ class SinglyChartsTest(unittest.TestCase):
         self.assertAlmostEqual(float(c["phi_peak_deg"]), 28.0)
         self.assertAlmostEqual(float(c["phi_residual_deg"]), 24.0)
         self.assertAlmostEqual(float(c["critical_taper_peak_deg"]), 7.777)  # the summary's column
-        self.assertAlmostEqual(float(c["critical_taper_residual_deg"]), oio.critical_taper_deg(24.0, 0.3))
+        self.assertAlmostEqual(float(c["critical_taper_residual_deg"]), surface.critical_taper_deg(24.0, 0.3))
         d = key("random_discs", 0.3, 0.1)  # no taper columns: computed from phi and mu_b
-        self.assertAlmostEqual(float(d["critical_taper_peak_deg"]), oio.critical_taper_deg(24.0, 0.1))
-        self.assertAlmostEqual(float(d["critical_taper_residual_deg"]), oio.critical_taper_deg(19.0, 0.1))
+        self.assertAlmostEqual(float(d["critical_taper_peak_deg"]), surface.critical_taper_deg(24.0, 0.1))
+        self.assertAlmostEqual(float(d["critical_taper_residual_deg"]), surface.critical_taper_deg(19.0, 0.1))
         self.assertTrue(math.isnan(float(d["thesis_appendix_a_deg"])))
         self.assertTrue(math.isnan(float(key("random_clusters", 0.2, 0.1)["phi_peak_deg"])))  # no bulk run
         self.assertTrue(math.isnan(float(key("random_discs", 0.2, 0.3)["critical_taper_residual_deg"])))  # 16 < 16.7
@@ -488,7 +486,7 @@ class SinglyChartsTest(unittest.TestCase):
         gc.make_singly([wedge], out, [default, rained])
         row = read_csv_table(os.path.join(out, "singly_table.csv"))[0]
         self.assertAlmostEqual(float(row["phi_peak_deg"]), 29.4)
-        self.assertAlmostEqual(float(row["critical_taper_residual_deg"]), oio.critical_taper_deg(25.8, 0.2))
+        self.assertAlmostEqual(float(row["critical_taper_residual_deg"]), surface.critical_taper_deg(25.8, 0.2))
         gc.make_singly([wedge], out, [default])  # no biaxial test of its preparation: none
         row = read_csv_table(os.path.join(out, "singly_table.csv"))[0]
         self.assertTrue(math.isnan(float(row["phi_peak_deg"])))
@@ -504,7 +502,7 @@ class SinglyChartsTest(unittest.TestCase):
             self.skipTest("h5py not installed")
         run = os.path.join(self.tmp, "one")
         make_singly_run(run, "random_clusters", 0.3, 0.3, 10.0, with_h5=True, wedge_angle=10.0)
-        surf = gc.final_surface(gc.load_singly(oio.Run(run)))
+        surf = gc.final_surface(gc.load_singly(RunFolder(run)))
         self.assertAlmostEqual(surf["backstop"], 80.0)
         self.assertAlmostEqual(surf["front"], -4.0)
         self.assertAlmostEqual(math.degrees(math.atan(surf["fit"]["slope"])), 10.0, delta=1.5)
@@ -535,7 +533,7 @@ class BiaxialChartsTest(unittest.TestCase):
         r = rows["random_clusters_0.3"]
         self.assertAlmostEqual(float(r["phi_peak_deg"]), 28.0)
         self.assertAlmostEqual(float(r["phi_residual_deg"]), 24.0)
-        self.assertAlmostEqual(float(r["critical_taper_mub0.2_peak_deg"]), oio.critical_taper_deg(28.0, 0.2))
+        self.assertAlmostEqual(float(r["critical_taper_mub0.2_peak_deg"]), surface.critical_taper_deg(28.0, 0.2))
         self.assertTrue(math.isnan(float(rows["random_discs_0.1"]["critical_taper_mub0.3_residual_deg"])))
         with open(os.path.join(self.out, "biaxial_table.md")) as f:
             md = f.read()
@@ -552,7 +550,7 @@ class CommandLineTest(unittest.TestCase):
         shutil.rmtree(self.tmp, ignore_errors=True)
 
     def run_script(self, *args):
-        return subprocess.run([sys.executable, SCRIPT] + list(args), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+        return subprocess.run(module_command("orogen.charts.granular", *args), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                               universal_newlines=True)
 
     def test_cli(self):

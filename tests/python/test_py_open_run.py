@@ -3,7 +3,6 @@ scripts run on a tiny run."""
 
 import shutil
 import subprocess
-import sys
 
 import h5py
 import numpy as np
@@ -11,7 +10,7 @@ import pandas as pd
 import xarray as xr
 
 import orogen
-from conftest import REPO
+from conftest import BINARY
 
 
 def test_series_and_units(cli_wedge):
@@ -62,22 +61,20 @@ def test_one_output_by_id_and_removals(cli_wedge):
     assert r.analysis is None
 
 
-def test_orogen_io_keeps_every_field(cli_wedge):
-    sys.path.insert(0, str(REPO / "python"))
-    import orogen_io
-    frame = orogen_io.read_last_frame(cli_wedge / "snapshots.h5")
+def test_chart_frames_keep_every_field(cli_wedge):
+    from orogen import folders
+    frame = folders.read_last_frame(cli_wedge / "snapshots.h5")
     for name in ("vx", "vy", "omega", "theta", "max_rel_disp", "disp3_x", "disp3_y", "x", "radius"):
         assert name in frame, name
 
 
 def test_read_frame_is_every_dataset_of_the_output_file(cli_wedge):
-    """orogen_io.read_frame, through the package's reader (orogen.frames) and the links of
+    """orogen.folders.read_frame, through the package's reader (orogen.frames) and the links of
     snapshots.h5, gives each output's datasets and attributes exactly as h5py reads its file."""
-    sys.path.insert(0, str(REPO / "python"))
-    import orogen_io
+    from orogen import folders
     files = sorted((cli_wedge / "snapshots").glob("output_*.h5"))
     for k, path in enumerate(files):
-        frame = orogen_io.read_frame(cli_wedge / "snapshots.h5", k)
+        frame = folders.read_frame(cli_wedge / "snapshots.h5", k)
         with h5py.File(path, "r") as f:
             datasets = {n: f[n][()] for n in f if isinstance(f[n], h5py.Dataset)}
             attrs = dict(f.attrs)
@@ -94,9 +91,8 @@ def test_read_frame_is_every_dataset_of_the_output_file(cli_wedge):
 def test_outputs_past_n_outputs_are_never_read(cli_wedge, tmp_path):
     """A killed run: snapshots.h5 counts fewer outputs than its links and files; the outputs
     past n_outputs (here files that are not HDF5 at all) are never opened by any reader."""
-    sys.path.insert(0, str(REPO / "python"))
-    import orogen_io
-    import wedge_charts
+    from orogen import folders
+    from orogen.charts import wedge as wedge_charts
     run = tmp_path / "killed"
     shutil.copytree(cli_wedge, run)
     with h5py.File(run / "snapshots.h5", "r+") as f:
@@ -105,24 +101,41 @@ def test_outputs_past_n_outputs_are_never_read(cli_wedge, tmp_path):
     for k in (n, n + 1):
         (run / "snapshots" / f"output_{k:06d}.h5").write_bytes(b"cut short by the kill")
     h5 = run / "snapshots.h5"
-    assert orogen_io.read_last_frame(h5)["output"] == n - 1
-    assert orogen_io.read_frame(h5, n) is None and orogen_io.read_frame(h5, -n - 1) is None
+    assert folders.read_last_frame(h5)["output"] == n - 1
+    assert folders.read_frame(h5, n) is None and folders.read_frame(h5, -n - 1) is None
     assert [p["output"] for p in wedge_charts.read_topography(h5)] == list(range(n))
     r = orogen.open_run(run)
     assert r.snapshots.sizes["output"] == n and np.isfinite(r.snapshots["x"].load().values[:, 0]).all()
-    assert r.output(-1).attrs["step"] == orogen_io.read_last_frame(h5)["attrs"]["step"]
+    assert r.output(-1).attrs["step"] == folders.read_last_frame(h5)["attrs"]["step"]
 
 
 def test_wedge_charts_on_a_tiny_run(cli_wedge, tmp_path):
-    proc = subprocess.run([sys.executable, str(REPO / "python" / "wedge_charts.py"), str(cli_wedge), "--out",
+    proc = subprocess.run(["/usr/bin/python3", "-m", "orogen.charts.wedge", str(cli_wedge), "--out",
                            str(tmp_path / "charts")], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     assert (tmp_path / "charts" / "summary.json").exists() and list((tmp_path / "charts").glob("*.png"))
 
 
+def test_orogen_charts_draws_what_the_module_draws(cli_wedge, tmp_path):
+    """`orogen charts RUN` runs the package by module name: the same files, byte for byte, as
+    `python3 -m orogen.charts.wedge`; a folder of no known run is refused with exit 2."""
+    cli = subprocess.run([BINARY, "charts", str(cli_wedge), "--out", str(tmp_path / "cli")], capture_output=True,
+                         text=True)
+    assert cli.returncode == 0, cli.stderr
+    module = subprocess.run(["/usr/bin/python3", "-m", "orogen.charts.wedge", str(cli_wedge), "--out",
+                             str(tmp_path / "module")], capture_output=True, text=True)
+    assert module.returncode == 0, module.stderr
+    names = sorted(p.name for p in (tmp_path / "module").iterdir())
+    assert names == sorted(p.name for p in (tmp_path / "cli").iterdir()) and "topography.png" in names
+    for name in names:
+        assert (tmp_path / "cli" / name).read_bytes() == (tmp_path / "module" / name).read_bytes(), name
+    bad = subprocess.run([BINARY, "charts", str(tmp_path)], capture_output=True, text=True)
+    assert bad.returncode == 2 and "holds no wedge" in bad.stderr
+
+
 def test_read_csv_keeps_whole_rows_only(tmp_path):
     """A last row cut short (and a row too long) is skipped; an empty or `nan` field is NaN (and
-    the chart scripts' orogen_io.read_table reads the same rows as float arrays)."""
+    the charts' orogen.tables.read_table reads the same rows as float arrays)."""
     path = tmp_path / "series.csv"
     path.write_text("# S: shortening [h0]\n# H: height [h0]\n# n: discs\nS,H,n\n0.1,1.5,10\n\n"
                     "0.2,,11\n0.3,nan,12,99\n0.4,2.25,13\n0.5,2.5")
@@ -130,8 +143,7 @@ def test_read_csv_keeps_whole_rows_only(tmp_path):
     assert list(frame["S"]) == [0.1, 0.2, 0.4] and frame["n"].dtype.kind == "i"
     assert np.isnan(frame["H"][1]) and frame["H"][2] == 2.25
     assert units == {"S": "h0", "H": "h0"} and meanings["n"] == "discs"
-    sys.path.insert(0, str(REPO / "python"))
-    import orogen_io
-    columns, descriptions = orogen_io.read_table(path)
+    from orogen import tables
+    columns, descriptions = tables.read_table(path)
     assert columns["S"].tolist() == [0.1, 0.2, 0.4] and columns["n"].dtype == float
     assert descriptions["H"] == "height [h0]"

@@ -3,7 +3,6 @@
 Run from the repository root:  /usr/bin/python3 -m unittest tests/python/test_wedge_charts.py
 """
 
-import importlib.util
 import json
 import math
 import os
@@ -16,11 +15,9 @@ import unittest
 import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-SCRIPT = os.path.join(REPO, "python", "wedge_charts.py")
-
-_spec = importlib.util.spec_from_file_location("wedge_charts", SCRIPT)
-wc = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(wc)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from source_tree import module_command  # noqa: E402
+from orogen.charts import wedge as wc  # noqa: E402
 
 try:
     import h5py
@@ -173,7 +170,7 @@ class WedgeChartsTest(unittest.TestCase):
         if h5py is None:
             self.skipTest("h5py not installed")
         from orogen.snapshots import open_snapshots
-        frame = wc.oio.read_frame(os.path.join(self.run_dir, "snapshots.h5"), -1)
+        frame = wc.folders.read_frame(os.path.join(self.run_dir, "snapshots.h5"), -1)
         snaps = open_snapshots(self.run_dir)
         self.assertEqual(snaps.sizes["output"], 3)
         self.assertTrue(np.array_equal(snaps["y"].isel(output=2).values, frame["y"]))
@@ -196,13 +193,13 @@ class WedgeChartsTest(unittest.TestCase):
             json.load(f)  # strict JSON: no NaN
 
     def test_cli(self):
-        proc = subprocess.run([sys.executable, SCRIPT, self.run_dir, self.run_dir, "--out", self.out,
+        proc = subprocess.run(module_command("orogen.charts.wedge") + [self.run_dir, self.run_dir, "--out", self.out,
                                "--labels", "x,y"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                               universal_newlines=True)
         self.assertEqual(proc.returncode, 0, proc.stderr)
         with open(os.path.join(self.out, "summary.json")) as f:
             self.assertEqual([r["label"] for r in json.load(f)["runs"]], ["x", "y"])
-        bad = subprocess.run([sys.executable, SCRIPT, self.tmp, "--out", self.out],
+        bad = subprocess.run(module_command("orogen.charts.wedge") + [self.tmp, "--out", self.out],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, universal_newlines=True)
         self.assertNotEqual(bad.returncode, 0)
         self.assertIn("series.csv", bad.stderr)

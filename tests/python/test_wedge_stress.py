@@ -1,4 +1,4 @@
-"""python/wedge_stress.py (issue 38): the mobilised friction angle and the orientation of the
+"""orogen.analysis.stress (issue 38): the mobilised friction angle and the orientation of the
 greatest compression inside the pro-wedge, read from the stress grid of a wedge run. On a
 synthetic run whose grid holds one known stress state everywhere (s1 = 3, s3 = 1 in m g / d,
 so sin phi_mob = 1/2, with s1 rising 6 degrees toward the hinterland), the script must find
@@ -14,8 +14,9 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(ROOT, "python"))
-import wedge_stress  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import source_tree  # noqa: E402,F401  (the package of this source tree)
+from orogen.analysis import stress as wedge_stress  # noqa: E402
 
 H0, CELL, PSI = 10.0, 1.0, 6.0
 

@@ -2,7 +2,7 @@
 """Charts of doubly-vergent wedge runs (Naylor 2004, chapters 4-5; docs MODEL.md sections 8-9).
 
 Usage:
-    /usr/bin/python3 python/wedge_charts.py RUN_DIR [RUN_DIR ...] --out OUTDIR [--labels a,b]
+    python3 -m orogen.charts.wedge RUN_DIR [RUN_DIR ...] --out OUTDIR [--labels a,b]
 
 Each RUN_DIR is the folder of an `orogen run --set run.experiment=wedge` run: it must hold
 series.csv and, for the topography chart, snapshots.h5. Writes into OUTDIR (each file
@@ -16,7 +16,7 @@ atomically: a temporary file in OUTDIR, then os.replace):
     summary.json     per run: final S and H, fitted exponent, late tapers, retro accretion onset
 
 Several runs are overlaid, one colour per run. Only numpy, pandas (the tables, through
-orogen_io), matplotlib (Agg) and h5py (snapshots.h5, through the package's orogen.frames) are
+orogen.tables), matplotlib (Agg) and h5py (snapshots.h5, through the package's orogen.frames) are
 used; without h5py the topography chart says so instead of drawing the surface.
 
 Conventions: lengths are in units of h0 and x is measured from the S-point (x = 0), as in
@@ -38,9 +38,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import orogen_io as oio  # noqa: E402
-from powerlaw import power_law_fit, simple_model_height  # noqa: E402,F401 (shared fits)
+from .. import atomic, folders, tables  # noqa: E402
+from ..analysis import surface  # noqa: E402
+from ..analysis.powerlaw import power_law_fit, simple_model_height  # noqa: E402,F401 (shared fits)
 
 FIT_S_MIN = 0.5          # power-law fit of H over S > FIT_S_MIN (and H > 0)
 LATE_FRACTION = 1.0 / 3  # late-time means over the last third of the run (in S)
@@ -56,7 +56,7 @@ FRONT_COLUMNS = ("Dp", "Mp", "Dr", "Mr", "T")
 
 def read_series(path):
     """Reads series.csv: returns (columns: dict name -> float array, descriptions: dict)."""
-    return oio.read_table(path)
+    return tables.read_table(path)
 
 
 def column(series, name):
@@ -85,7 +85,7 @@ def read_topography(h5_path, max_profiles=None):
     Columns of width 2.3 mean radii (of each output) on a grid anchored at the S-point; the top
     (y + r) of the highest disc in a column is the surface there. Returns a list of dicts with
     step, S, x_centres (h0), height (h0; NaN for empty columns), and h0 (world units)."""
-    if oio.h5py is None:
+    if folders.h5py is None:
         raise RuntimeError("h5py is not installed")
     from orogen.frames import Snapshots  # the package's reader (h5py): complete outputs only
     out = []
@@ -114,7 +114,7 @@ def read_topography(h5_path, max_profiles=None):
             if not (width > 0):
                 width = 1.0
             lo, hi = np.floor(x.min() / width), np.floor(x.max() / width) + 1  # grid anchored at x = 0
-            centres, height = oio.surface_columns(x, y, r, lo * width, hi * width, width)
+            centres, height = surface.surface_columns(x, y, r, lo * width, hi * width, width)
             out.append(dict(output=k, step=step, S=s_value, x=centres / h0, height=height / h0, h0=h0))
     return out
 
@@ -198,7 +198,7 @@ def summarize(run):
 
 def write_json(obj, path):
     text = json.dumps(obj, indent=2, allow_nan=False) + "\n"
-    oio.write_text(path, text)
+    atomic.write_text(path, text)
 
 
 def run_colors(n):
@@ -266,7 +266,7 @@ def chart_height_peak(runs, path):
         for ax in axes:
             no_data(ax)
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def chart_tapers(runs, path):
@@ -297,7 +297,7 @@ def chart_tapers(runs, path):
         else:
             no_data(ax, "no deformation front yet")
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def chart_fronts(runs, path):
@@ -325,7 +325,7 @@ def chart_fronts(runs, path):
     if not drawn:
         no_data(ax, "no front yet")
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def chart_slip(runs, path):
@@ -351,7 +351,7 @@ def chart_slip(runs, path):
             no_data(ax)
     axes[1].set_xlabel("S (convergence / h0)")
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def surface_at(profile, x):
@@ -460,7 +460,7 @@ def chart_topography(runs, path):
                 for name, text in (("Dp", "Dp, Dr"), ("Mp", "Mp, Mr"), ("T", "T (peak)"))]
     ax_p.legend(handles=handles, fontsize=7, loc="upper left")
     if not any_profile:
-        no_data(ax_p, "no snapshots.h5 (or no h5py)" if oio.h5py is None or all(p is None for p in profiles_all)
+        no_data(ax_p, "no snapshots.h5 (or no h5py)" if folders.h5py is None or all(p is None for p in profiles_all)
                 else "no discs")
 
     # Right: S-x image coloured by elevation, one panel per run, fronts on top.
@@ -503,7 +503,7 @@ def chart_topography(runs, path):
             ax.set_xlabel("x / h0 from the S-point")
         ax.legend(fontsize=7, loc="upper left", ncol=5)
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 # --------------------------------------------------------------------------------------------
@@ -560,7 +560,7 @@ def make_charts(dirs, out_dir, labels=None):
     with np.errstate(invalid="ignore", divide="ignore"):
         for name, draw in CHARTS:
             draw(runs, os.path.join(out_dir, name))
-        summary = {"generated_by": "python/wedge_charts.py", "runs": [summarize(r) for r in runs]}
+        summary = {"generated_by": "orogen.charts.wedge", "runs": [summarize(r) for r in runs]}
     write_json(summary, os.path.join(out_dir, "summary.json"))
     return summary
 

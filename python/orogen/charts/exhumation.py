@@ -3,10 +3,10 @@
 
 Usage:
     build/release/orogen analyze RUN_DIR
-    /usr/bin/python3 python/exhumation_charts.py RUN_DIR [--out DIR] [--closure 0.5]
+    python3 -m orogen.charts.exhumation RUN_DIR [--out DIR] [--closure 0.5]
                                                  [--positions -1,0,1] [--frames 4]
 
-Reads RUN_DIR/analysis.h5 (python/orogen_analysis.py) and writes into DIR (default
+Reads RUN_DIR/analysis.h5 (orogen.analysis.exhumation) and writes into DIR (default
 RUN_DIR/charts/exhumation), each file atomically (temporary name, then os.replace):
 
     spacetime_elevation.png     x, time, coloured by elevation (thesis Figs 6.10, 6.11)
@@ -37,8 +37,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import orogen_analysis  # noqa: E402
+from .. import atomic  # noqa: E402
+from ..analysis import exhumation as orogen_analysis  # noqa: E402
 
 FIGURES = ("spacetime_elevation.png", "spacetime_max_depth.png", "spacetime_cum_erosion.png",
            "spacetime_surface_age.png", "max_depth_positions.png", "age_positions.png",
@@ -47,11 +47,7 @@ FIGURES = ("spacetime_elevation.png", "spacetime_max_depth.png", "spacetime_cum_
 
 
 def save(fig, out, name):
-    path = os.path.join(out, name)
-    tmp = os.path.join(out, "." + name + ".tmp.png")
-    fig.savefig(tmp, dpi=110)
-    plt.close(fig)
-    os.replace(tmp, path)
+    atomic.save_figure(fig, os.path.join(out, name))
 
 
 def spacetime(ds, da, title, label, cmap, out, name):

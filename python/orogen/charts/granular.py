@@ -2,9 +2,9 @@
 """Charts of the granular material experiments (Naylor 2004, chapter 3 and Appendix A).
 
 Usage:
-    /usr/bin/python3 python/granular_charts.py repose  RUN_OR_SWEEP_DIR... --out OUTDIR
-    /usr/bin/python3 python/granular_charts.py singly  RUN_OR_SWEEP_DIR... --out OUTDIR [--bulk BIAXIAL...]
-    /usr/bin/python3 python/granular_charts.py biaxial RUN_OR_SWEEP_DIR... --out OUTDIR
+    python3 -m orogen.charts.granular repose  RUN_OR_SWEEP_DIR... --out OUTDIR
+    python3 -m orogen.charts.granular singly  RUN_OR_SWEEP_DIR... --out OUTDIR [--bulk BIAXIAL...]
+    python3 -m orogen.charts.granular biaxial RUN_OR_SWEEP_DIR... --out OUTDIR
 
 Each argument is a run folder of `orogen run` (config.toml, series.csv, summary.csv,
 snapshots.h5), a sweep folder of `orogen sweep` (results.csv and runs/NAME/: its finished runs;
@@ -34,7 +34,7 @@ os.replace):
     biaxial_friction_vs_mu.png peak and residual bulk friction angle against contact friction
     biaxial_table.md, .csv     per run: bulk friction, dilatancy, critical tapers
 
-Only numpy, pandas, matplotlib (Agg) and h5py are used (readers in python/orogen_io.py, over
+Only numpy, pandas, matplotlib (Agg) and h5py are used (readers in orogen.folders and orogen.tables, over
 the package orogen); without h5py the pictures of particles and final surfaces say so. Lengths
 are in units of the largest disc diameter d unless an axis says h0 (layer thickness); angles in
 degrees. Exit status 0, or 2
@@ -55,8 +55,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import EllipseCollection  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import orogen_io as oio  # noqa: E402
+from .. import atomic, folders, tables  # noqa: E402
+from ..analysis import surface  # noqa: E402
 
 NAN = float("nan")
 PACKING_ORDER = ("hexagonal", "random_discs", "random_clusters")
@@ -202,34 +202,34 @@ def draw_discs(ax, frame):
 
 
 def repose_profile(run):
-    """The run's surface at rest: dict x, height, fitted (bool), fit (oio.fit_line of the fitted
+    """The run's surface at rest: dict x, height, fitted (bool), fit (surface.fit_line of the fitted
     columns), source ('profile.csv' or 'computed from snapshots.h5'); None if neither file."""
     path = run.file("profile.csv")
     if path:
-        cols, _ = oio.read_table(path)
+        cols, _ = tables.read_table(path)
         x, h = cols.get("x", np.array([])), cols.get("height", np.array([]))
         fitted = cols.get("fitted", np.zeros(x.size)) == 1
-        return dict(x=x, height=h, fitted=fitted, fit=oio.fit_line(x[fitted], h[fitted]), source="profile.csv")
+        return dict(x=x, height=h, fitted=fitted, fit=surface.fit_line(x[fitted], h[fitted]), source="profile.csv")
     h5 = run.file("snapshots.h5")
-    if not h5 or oio.h5py is None:
+    if not h5 or folders.h5py is None:
         return None
     # As ReposeExperiment::profile: columns of [0, size]; the slope is the columns above the held
     # layer (slump) or the lip (ledge) plus d_max and below the settled top minus 1.5 d_max.
-    first, last = oio.read_frame(h5, 0), oio.read_frame(h5, -1)
+    first, last = folders.read_frame(h5, 0), folders.read_frame(h5, -1)
     if first is None:
         return None
     size = fnum(run.value("repose.size"))
     d_max = fnum(run.value("particles.d_max", 1.0))
-    _, h_first = oio.surface_columns(first["x"], first["y"], first["radius"], 0.0, size)
+    _, h_first = surface.surface_columns(first["x"], first["y"], first["radius"], 0.0, size)
     top = float(np.nanmean(h_first)) if np.isfinite(h_first).any() else size
     if run.value("repose.variant") == "ledge":
         base = fnum(run.value("repose.ledge_fraction")) * top + d_max
     else:
         base = fnum(run.value("repose.fixed_height")) + d_max
-    x, h = oio.surface_columns(last["x"], last["y"], last["radius"], 0.0, size)
+    x, h = surface.surface_columns(last["x"], last["y"], last["radius"], 0.0, size)
     with np.errstate(invalid="ignore"):
         fitted = np.isfinite(h) & (h > base) & (h < top - 1.5 * d_max)
-    return dict(x=x, height=h, fitted=fitted, fit=oio.fit_line(x[fitted], h[fitted]),
+    return dict(x=x, height=h, fitted=fitted, fit=surface.fit_line(x[fitted], h[fitted]),
                 source="computed from snapshots.h5")
 
 
@@ -243,7 +243,7 @@ def load_repose(run):
     try:
         prof = repose_profile(run)
     except Exception as e:  # an unreadable file: drawn as 'no profile', the table still filled
-        oio.warn("%s: %s" % (run.dir, e))
+        folders.warn("%s: %s" % (run.dir, e))
     angle = s.get("angle_deg", NAN)
     if not finite(angle) and prof:
         angle = fit_angle(prof["fit"])
@@ -269,11 +269,11 @@ def chart_repose_profile(item, path):
     fig, ax = plt.subplots(figsize=(11, 6.5))
     frame = None
     h5 = run.file("snapshots.h5")
-    if h5 and oio.h5py is not None:
+    if h5 and folders.h5py is not None:
         try:
-            frame = oio.read_last_frame(h5)
+            frame = folders.read_last_frame(h5)
         except Exception as e:
-            oio.warn("%s: %s" % (h5, e))
+            folders.warn("%s: %s" % (h5, e))
     x_lo, x_hi, y_lo, y_hi = 0.0, fnum(run.value("repose.size", 40.0)), 0.0, fnum(run.value("repose.size", 40.0))
     if frame is not None:
         bx_lo, bx_hi, by_lo, by_hi = draw_discs(ax, frame)
@@ -307,7 +307,7 @@ def chart_repose_profile(item, path):
     labels.append("held discs (colours: initial-depth horizons)")
     ax.legend(handles, labels, fontsize=8, loc="upper right")
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def row_key(item, variants):
@@ -362,7 +362,7 @@ def chart_repose_grid(items, path):
                 ax.legend(fontsize=6, loc="upper right")
     fig.suptitle("Angle of repose: surface at rest (grey), fitted columns (dots) and line (dashed)", fontsize=11)
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def chart_repose_angle_vs_mu(items, path):
@@ -396,7 +396,7 @@ def repose_rows(items):
 
 
 def repose_markdown(items):
-    out = "# Angle of repose\n\nWritten by `python/granular_charts.py repose`. Angle: straight-line fit of " \
+    out = "# Angle of repose\n\nWritten by `python3 -m orogen.charts.granular repose`. Angle: straight-line fit of " \
           "the surface columns on the slope (summary.csv `angle_deg`); R² of that line; concavity: " \
           "descent angle at the top of the slope minus at its foot from a quadratic fit (> 0 concave); " \
           "removed: fraction of the discs that left the box.\n\n"
@@ -419,7 +419,7 @@ def repose_markdown(items):
 
 
 def make_repose(paths, out_dir):
-    runs = oio.collect_runs(paths, "repose")
+    runs = folders.collect_runs(paths, "repose")
     items = sorted((load_repose(r) for r in runs),
                    key=lambda it: (packing_key(it["packing"]), it["variant"], it["mu"], it["name"]))
     os.makedirs(out_dir, exist_ok=True)
@@ -434,8 +434,8 @@ def make_repose(paths, out_dir):
         for name, draw in (("repose_grid.png", chart_repose_grid), ("repose_angle_vs_mu.png", chart_repose_angle_vs_mu)):
             draw(items, os.path.join(out_dir, name))
             written.append(os.path.join(out_dir, name))
-    oio.write_text(os.path.join(out_dir, "repose_table.md"), repose_markdown(items))
-    oio.write_text(os.path.join(out_dir, "repose_table.csv"), csv_text(list(REPOSE_COLUMNS), repose_rows(items)))
+    atomic.write_text(os.path.join(out_dir, "repose_table.md"), repose_markdown(items))
+    atomic.write_text(os.path.join(out_dir, "repose_table.csv"), csv_text(list(REPOSE_COLUMNS), repose_rows(items)))
     written += [os.path.join(out_dir, n) for n in ("repose_table.md", "repose_table.csv")]
     return dict(items=items, written=written)
 
@@ -503,7 +503,7 @@ def chart_biaxial_stress_strain(items, path):
     drawn = False
     unsheared = []
     for it in items:
-        s, c = it["run"].series, colours[it["name"]]
+        s, c = it["run"].series_columns, colours[it["name"]]
         if "axial_strain" not in s:
             unsheared.append(it["name"])
             continue
@@ -541,7 +541,7 @@ def chart_biaxial_stress_strain(items, path):
         ax_p.text(0.01, 0.99, "not sheared (no rows with phase >= 1): %s" % ", ".join(unsheared),
                   transform=ax_p.transAxes, ha="left", va="top", fontsize=7, color="tab:red")
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def plot_runs_and_means(ax, items, key, colour, ls, marker, label, mfc=None):
@@ -565,7 +565,7 @@ def finish_mu_chart(fig, ax, drawn, path, fontsize):
     else:
         no_data(ax)
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def chart_biaxial_friction_vs_mu(items, path):
@@ -605,7 +605,7 @@ def biaxial_taper(it, mu_b, which):
     for (mb, w), v in it["tapers"].items():
         if w == which and same(mb, mu_b):
             return v
-    return oio.critical_taper_deg(it["phi_" + which], mu_b)
+    return surface.critical_taper_deg(it["phi_" + which], mu_b)
 
 
 def biaxial_tables(items):
@@ -616,7 +616,7 @@ def biaxial_tables(items):
     for it in items:
         rows.append([it["name"], it["packing"], it["mu"]] + [it["summary"].get(k, NAN) for k in BIAXIAL_VALUES]
                     + [biaxial_taper(it, mb, w) for mb in bases for w in ("peak", "residual")])
-    md = "# Biaxial tests: bulk friction\n\nWritten by `python/granular_charts.py biaxial`. φ: mobilised " \
+    md = "# Biaxial tests: bulk friction\n\nWritten by `python3 -m orogen.charts.granular biaxial`. φ: mobilised " \
          "friction angle asin((σ1 − σ3)/(σ1 + σ3)), at its peak and its mean in the residual state; ψ: " \
          "dilatancy angle at the peak; σ3 dev: largest relative deviation of the confining stress from its " \
          "target; I: inertial number (quasi-static below about 1e-3); α_c: critical taper of a dry wedge on " \
@@ -638,7 +638,7 @@ def biaxial_tables(items):
 
 
 def make_biaxial(paths, out_dir):
-    runs = oio.collect_runs(paths, "biaxial")
+    runs = folders.collect_runs(paths, "biaxial")
     items = sorted((load_biaxial(r) for r in runs), key=lambda it: (packing_key(it["packing"]), it["mu"], it["name"]))
     os.makedirs(out_dir, exist_ok=True)
     written = []
@@ -648,8 +648,8 @@ def make_biaxial(paths, out_dir):
             draw(items, os.path.join(out_dir, name))
             written.append(os.path.join(out_dir, name))
     md, csv = biaxial_tables(items)
-    oio.write_text(os.path.join(out_dir, "biaxial_table.md"), md)
-    oio.write_text(os.path.join(out_dir, "biaxial_table.csv"), csv)
+    atomic.write_text(os.path.join(out_dir, "biaxial_table.md"), md)
+    atomic.write_text(os.path.join(out_dir, "biaxial_table.csv"), csv)
     written += [os.path.join(out_dir, n) for n in ("biaxial_table.md", "biaxial_table.csv")]
     return dict(items=items, written=written)
 
@@ -719,14 +719,14 @@ def chart_singly_taper(items, path, bulk=None):
     mu_bs = sorted({it["mu_b"] for it in items if finite(it["mu_b"])})
     n = len(packings)
     fig, axes = plt.subplots(n, 1, figsize=(11, 4.4 * n + 0.6), squeeze=False)
-    s_max = max([float(np.nanmax(it["run"].series["shortening"])) for it in items
-                 if "shortening" in it["run"].series and np.isfinite(it["run"].series["shortening"]).any()] or [1.0])
+    s_max = max([float(np.nanmax(it["run"].series_columns["shortening"])) for it in items
+                 if "shortening" in it["run"].series_columns and np.isfinite(it["run"].series_columns["shortening"]).any()] or [1.0])
     for p_i, packing in enumerate(packings):
         ax = axes[p_i][0]
         sel = [it for it in items if it["packing"] == packing]
         drawn = False
         for it in sorted(sel, key=lambda it: (it["mu"], it["mu_b"], it["name"])):
-            s = it["run"].series
+            s = it["run"].series_columns
             if "shortening" not in s or "taper" not in s:
                 continue
             x, t = s["shortening"], s["taper"]
@@ -800,7 +800,7 @@ def chart_singly_taper(items, path, bulk=None):
     axes[0][0].legend(handles=handles, fontsize=7, loc="upper left", ncol=2)
     fig.suptitle("Singly-vergent wedge: taper against shortening (cf. thesis Fig 3.23)", fontsize=11)
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def final_surface(it):
@@ -810,26 +810,26 @@ def final_surface(it):
     world units), or None."""
     run = it["run"]
     h5 = run.file("snapshots.h5")
-    if not h5 or oio.h5py is None:
+    if not h5 or folders.h5py is None:
         return None
-    frame = oio.read_last_frame(h5)
+    frame = folders.read_last_frame(h5)
     if frame is None:
         return None
     walls = frame["walls"]
     backstop = float(walls[2][0]) if len(walls) > 2 else NAN
-    s = run.series
+    s = run.series_columns
     if not finite(backstop) and "backstop" in s and np.isfinite(s["backstop"]).any():
         backstop = float(s["backstop"][np.isfinite(s["backstop"])][-1]) * it["h0"]
     if not finite(backstop):
         backstop = float(np.max(frame["x"] + frame["radius"]))
-    x, h = oio.surface_columns(frame["x"], frame["y"], frame["radius"], 0.0, backstop)
+    x, h = surface.surface_columns(frame["x"], frame["y"], frame["radius"], 0.0, backstop)
     front = NAN
     if "front" in s and len(s["front"]) and finite(float(s["front"][-1])):
         front = float(s["front"][-1]) * it["h0"]
     fit = None
     if finite(front):
         sel = np.isfinite(h) & (x >= front) & (x <= backstop - it["d_max"])
-        fit = oio.fit_line(x[sel], h[sel])
+        fit = surface.fit_line(x[sel], h[sel])
     h0 = it["h0"]
     return dict(xb=(x - backstop) / h0, elevation=h / h0 - 1.0, front=(front - backstop) / h0 if finite(front) else NAN,
                 fit=fit, backstop=backstop)
@@ -841,7 +841,7 @@ def chart_singly_profiles(items, path):
         try:
             surfaces.append(final_surface(it))
         except Exception as e:
-            oio.warn("%s: %s" % (it["run"].dir, e))
+            folders.warn("%s: %s" % (it["run"].dir, e))
             surfaces.append(None)
     n = len(items)
     fig, ax = plt.subplots(figsize=(11, 1.2 + 1.1 * max(n, 1)))
@@ -882,7 +882,7 @@ def chart_singly_profiles(items, path):
     if not items:
         no_data(ax)
     fig.tight_layout()
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 SINGLY_COLUMNS = ("run", "packing", "mu", "mu_b", "taper_steady_deg", "taper_steady_sd_deg", "taper_final_deg",
@@ -903,7 +903,7 @@ def singly_rows(items, bulk):
 
 
 def singly_markdown(rows, with_bulk):
-    out = "# Singly-vergent wedge: tapers\n\nWritten by `python/granular_charts.py singly`. Steady: mean ± sd " \
+    out = "# Singly-vergent wedge: tapers\n\nWritten by `python3 -m orogen.charts.granular singly`. Steady: mean ± sd " \
           "of the taper over the outputs after singly.steady_from of the run (summary.csv); final: the " \
           "taper at the end, and over the front and back (at the backstop) halves of the wedge. "
     if with_bulk:
@@ -926,16 +926,16 @@ def singly_markdown(rows, with_bulk):
 
 
 def make_singly(paths, out_dir, bulk_paths=None):
-    runs = oio.collect_runs(paths, "singly_vergent")
+    runs = folders.collect_runs(paths, "singly_vergent")
     items = sorted((load_singly(r) for r in runs),
                    key=lambda it: (packing_key(it["packing"]), it["mu"], it["mu_b"], it["name"]))
     bulk = None
     if bulk_paths:
-        bulk = Bulk([load_biaxial(r) for r in oio.collect_runs(bulk_paths, "biaxial")])
+        bulk = Bulk([load_biaxial(r) for r in folders.collect_runs(bulk_paths, "biaxial")])
         missing = sorted({(it["packing"], it["mu"], it["prep"]) for it in items
                           if not bulk._group(it["packing"], it["mu"], it["prep"])})
         for p, mu, prep in missing:
-            oio.warn("no biaxial run of %s, contact mu %g%s among --bulk: no critical taper for it"
+            folders.warn("no biaxial run of %s, contact mu %g%s among --bulk: no critical taper for it"
                      % (p, mu, preparation_text(prep)))
     os.makedirs(out_dir, exist_ok=True)
     written = []
@@ -944,8 +944,8 @@ def make_singly(paths, out_dir, bulk_paths=None):
         chart_singly_profiles(items, os.path.join(out_dir, "singly_profiles.png"))
     written += [os.path.join(out_dir, n) for n in ("singly_taper.png", "singly_profiles.png")]
     rows = singly_rows(items, bulk)
-    oio.write_text(os.path.join(out_dir, "singly_table.md"), singly_markdown(rows, bulk is not None))
-    oio.write_text(os.path.join(out_dir, "singly_table.csv"), csv_text(list(SINGLY_COLUMNS), rows))
+    atomic.write_text(os.path.join(out_dir, "singly_table.md"), singly_markdown(rows, bulk is not None))
+    atomic.write_text(os.path.join(out_dir, "singly_table.csv"), csv_text(list(SINGLY_COLUMNS), rows))
     written += [os.path.join(out_dir, n) for n in ("singly_table.md", "singly_table.csv")]
     return dict(items=items, rows=rows, written=written)
 
@@ -985,11 +985,11 @@ def main(argv=None):
             for it in result["items"]:
                 print("%s: %s, mu %g: phi peak %s, residual %s deg" % (it["name"], it["packing"], it["mu"],
                                                                      show(it["phi_peak"]), show(it["phi_residual"])))
-    except oio.RunError as e:
+    except folders.RunError as e:
         print("error: %s" % e, file=sys.stderr)
         return 2
     if not result["items"]:
-        oio.warn("no finished runs: the charts say 'no data'")
+        folders.warn("no finished runs: the charts say 'no data'")
     print("written to %s: %s" % (args.out, ", ".join(os.path.basename(w) for w in result["written"])))
     return 0
 

@@ -3,7 +3,7 @@
 docs/exhumation-evidence.md is made of these).
 
 Usage:
-    /usr/bin/python3 python/exhumation_summary.py RUN [RUN ...] [--json FILE] [--cycle] [--ages N]
+    python3 -m orogen.analysis.exhumation_summary RUN [RUN ...] [--json FILE] [--cycle] [--ages N]
                                                    [--flux-table WIDTH]
 
 Each RUN is a wedge run folder that `orogen analyze` has analysed (analysis.h5, series.csv).
@@ -51,15 +51,14 @@ import warnings
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import orogen  # noqa: E402  (the readers only: no compiled engine needed)
-import orogen_analysis as oa  # noqa: E402
+from ..tables import read_csv
+from . import exhumation as oa
 
 
 
 def read_series(run, n):
     """S, Dp and Dr of the first n outputs of series.csv (a running run's series may be ahead)."""
-    series = orogen.read_csv(os.path.join(run, "series.csv"))[0].iloc[:n]
+    series = read_csv(os.path.join(run, "series.csv"))[0].iloc[:n]
     return {k: series[k].to_numpy(dtype=float) for k in ("S", "Dp", "Dr")}
 
 

@@ -4,7 +4,7 @@ depth so far and by their closure-depth age (thesis chapter 6), from `orogen ana
 
 Usage:
     build/release/orogen analyze RUN_DIR
-    /usr/bin/python3 python/exhumation_frames.py RUN_DIR [--closure 0.5] [--every 1] [--width 1000] [--fps 12]
+    python3 -m orogen.charts.exhumation_frames RUN_DIR [--closure 0.5] [--every 1] [--width 1000] [--fps 12]
 
 Writes RUN_DIR/frames_max_depth/frame_NNNNNN.png and RUN_DIR/frames_age/frame_NNNNNN.png (NNNNNN
 the output, as `orogen render` names its frames, each file atomically) and, where ffmpeg is
@@ -25,9 +25,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import orogen_analysis  # noqa: E402
-from orogen_io import save_figure  # noqa: E402
+from ..analysis import exhumation as orogen_analysis  # noqa: E402
+from ..atomic import save_figure, temporary_path  # noqa: E402
 
 
 def frames(ds, values, label, what, cmap, folder, every, width_px):
@@ -72,13 +71,15 @@ def animate(run, name, fps):
     for ext, extra in (("mp4", ["-pix_fmt", "yuv420p", "-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2"]),
                        ("gif", ["-vf", "scale=800:-1:flags=lanczos"])):
         out = os.path.join(run, "animation_%s.%s" % (name, ext))
-        tmp = os.path.join(run, ".animation_%s.tmp.%s" % (name, ext))
-        r = subprocess.run([ffmpeg, "-y", "-loglevel", "error", "-framerate", str(fps), "-pattern_type", "glob",
-                            "-i", pattern, *extra, tmp], capture_output=True)
-        if r.returncode != 0:
-            print("warning: ffmpeg failed on %s: %s" % (out, r.stderr.decode(errors="replace")[-300:]), file=sys.stderr)
+        try:
+            with temporary_path(out, suffix="." + ext) as tmp:
+                r = subprocess.run([ffmpeg, "-y", "-loglevel", "error", "-framerate", str(fps), "-pattern_type",
+                                    "glob", "-i", pattern, *extra, tmp], capture_output=True)
+                if r.returncode != 0:
+                    raise RuntimeError(r.stderr.decode(errors="replace")[-300:])
+        except RuntimeError as e:
+            print("warning: ffmpeg failed on %s: %s" % (out, e), file=sys.stderr)
             return False
-        os.replace(tmp, out)
     return True
 
 

@@ -1,6 +1,6 @@
 """Power-law trends of wedge growth (Naylor 2004, sections 5.2 and 5.4.6; MODEL.md section 9).
 
-Shared by wedge_charts.py (one run's H(S)) and ensemble_stats.py (an ensemble's mean fronts):
+Shared by orogen.charts.wedge (one run's H(S)) and orogen.stats (an ensemble's mean fronts):
 
     power_law_fit(s, x, s_min)      least squares of log x = log a + b log s over s > s_min
     auto_offset(s, x, s_min)        the offset x0 for which x - x0 is most nearly a power law

@@ -31,8 +31,8 @@ ANIMATIONS = {
     "frames": ("Horizons (initial depth)", "Figs 4.5, 5.3"),
     "frames_faults": ("Faults (relative displacement of neighbours)", "Fig 5.7"),
     "frames_rel_disp": ("Faults (relative displacement of neighbours)", "Fig 5.7"),
-    "frames_max_depth": ("Maximum depth so far (exhumation_frames.py)", ""),
-    "frames_age": ("Closure-depth age (exhumation_frames.py)", ""),
+    "frames_max_depth": ("Maximum depth so far (orogen.charts.exhumation_frames)", ""),
+    "frames_age": ("Closure-depth age (orogen.charts.exhumation_frames)", ""),
     "frames_cluster": ("Clusters", ""),
 }
 

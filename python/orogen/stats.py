@@ -2,7 +2,7 @@
 """Statistics of an ensemble (Naylor 2004, 5.4.6 and Table 5.1; 5.4.5-5.4.7; docs/ensembles.md).
 
 Usage:
-    /usr/bin/python3 python/ensemble_stats.py DIR
+    python3 -m orogen.stats DIR
 
 DIR is an `orogen ensemble` folder: ensemble.toml (the plan), members.csv (what became of
 each member) and members/NAME/series.csv. `orogen ensemble` runs this at the end; run it by
@@ -33,10 +33,8 @@ import tomllib
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import orogen_io as oio  # noqa: E402
-import powerlaw  # noqa: E402
-import thrust_cycles  # noqa: E402
+from . import atomic, tables
+from .analysis import cycles as thrust_cycles, powerlaw
 
 SERIES = ("Dp", "Mp", "Dr", "Mr", "H", "T")
 FRONTS = ("Dp", "Mp", "Dr", "Mr", "T")  # an exact 0 means "no front yet" (docs/output-files.md)
@@ -68,7 +66,7 @@ def read_members_csv(folder):
     path = os.path.join(folder, "members.csv")
     if not os.path.isfile(path):
         raise Usage(f"{path} is missing: run `orogen ensemble` on this folder first")
-    return {row["name"]: row for row in oio.read_rows(path)[0]}
+    return {row["name"]: row for row in tables.read_rows(path)[0]}
 
 
 def read_member(folder, name):
@@ -76,7 +74,7 @@ def read_member(folder, name):
     path = os.path.join(folder, "members", name, "series.csv")
     if not os.path.isfile(path):
         return None
-    series, _ = oio.read_table(path)
+    series, _ = tables.read_table(path)
     if "S" not in series or len(series["S"]) == 0:
         return None
     return {k: np.asarray(v, dtype=float) for k, v in series.items()}
@@ -225,7 +223,7 @@ def md_table(header, rows, numeric=None):
 
 def write(path, text):
     os.makedirs(os.path.dirname(path), exist_ok=True)
-    oio.write_text(path, text)
+    atomic.write_text(path, text)
 
 
 # --------------------------------------------------------------------------------------------
@@ -423,7 +421,7 @@ def main(argv):
         plan = read_plan(folder)
         status = read_members_csv(folder)
     except Usage as e:
-        print(f"ensemble_stats: {e}", file=sys.stderr)
+        print(f"orogen.stats: {e}", file=sys.stderr)
         return 2
     stats = plan.get("stats", {})
     stats.setdefault("s_min", 2.0)
@@ -449,7 +447,7 @@ def main(argv):
         out = os.path.join(folder, "aggregate", g) if len(groups) > 1 else os.path.join(folder, "aggregate")
         per_member.update(aggregate(out, f"{title} {g}".strip(), finished, stats))
     results(folder, plan, status, per_member, series_of)
-    print(f"ensemble_stats: {len(series_of)} of {len(members)} members aggregated in "
+    print(f"orogen.stats: {len(series_of)} of {len(members)} members aggregated in "
           f"{os.path.join(folder, 'aggregate')}; results in {os.path.join(folder, 'results.md')}", file=sys.stderr)
     return 0
 

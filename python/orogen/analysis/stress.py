@@ -19,7 +19,7 @@ with compression positive:
 Prints their medians and quartiles over all those squares, the theory's psi_b for the base's
 mu_bp at the peak and residual friction angles given, and the late pro taper of the series.
 
-    /usr/bin/python3 python/wedge_stress.py RUN_DIR [--block D] [--phi 35.6,24.6]
+    python3 -m orogen.analysis.stress RUN_DIR [--block D] [--phi 35.6,24.6]
 """
 import argparse
 import math
@@ -28,7 +28,7 @@ import h5py
 import numpy as np
 import pandas as pd
 
-from basal_traction import late_outputs
+from .traction import late_outputs
 
 
 def psi_base(phi_deg, mu_b):

@@ -16,7 +16,7 @@ front:
 
 Prints the mean, standard deviation and range over the outputs.
 
-    /usr/bin/python3 python/basal_traction.py RUN_DIR
+    python3 -m orogen.analysis.traction RUN_DIR
 """
 import argparse
 import tomllib

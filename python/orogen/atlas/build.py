@@ -6,7 +6,7 @@ import shutil
 import time
 
 from . import discover, manifest, page_compare, page_group, page_index, page_run, presets, run_info
-from .atomic import place_file, write_text
+from ..atomic import place_file, write_text
 from .markup import json_for_script
 
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Loader of `orogen analyze` results (docs/exhumation.md, docs/output-files.md).
 
-    import orogen_analysis
+    from orogen.analysis import exhumation as orogen_analysis
     ds = orogen_analysis.load("runs/E5")        # the run folder or its analysis.h5
     ds.elevation.sel(column=2.0, method="nearest").plot()
 
@@ -17,8 +17,7 @@ import warnings
 import numpy as np
 import xarray as xr
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import orogen  # noqa: E402  (the readers only: no compiled engine needed)
+from ..tables import read_csv
 
 STEP_OUT = 0.5      # h0: Dp moving outward by more than this in one output is a pro step-out
 LOW_EROSION = 0.25  # of the incoming flux: an output eroding less erodes "little" (Figs 6.6, 6.7)
@@ -60,7 +59,7 @@ def pro_cycle(run, ds):
     analysis.h5), `ds` its analysis. A running run's series may hold outputs the analysis has
     not reached yet: the rows stop at the analysis's last output."""
     folder = run if os.path.isdir(run) else os.path.dirname(os.path.abspath(run))
-    series = orogen.read_csv(os.path.join(folder, "series.csv"))[0]
+    series = read_csv(os.path.join(folder, "series.csv"))[0]
     n = min(len(series), ds.sizes["time"])
     df = series.iloc[:n][["S", "Dp", "Mp"]].astype(float).reset_index(drop=True)
     df["front_gap"] = df.Mp - df.Dp

@@ -1,20 +1,20 @@
 """Orogen's CSV files (series.csv, summary.csv, results.csv, aggregate tables): `# name:
 meaning [unit]` lines before the header row, then numbers."""
-import csv
 import math
 
-from orogen.results import column_docs
+import pandas as pd
+
+from ..tables import column_docs, read_rows
 
 
 def read(path):
     """{'columns': [...], 'units': {name: unit}, 'docs': {name: text}, 'rows': [[str...]]}."""
-    units, docs = column_docs(path)  # the package's reader of the `# name: meaning [unit]` lines
-    with open(path, encoding="utf-8", errors="replace") as f:
-        lines = [line for line in f if not line.startswith("#") and line.strip()]
-    rows = list(csv.reader(lines))
-    if not rows:
+    units, docs = column_docs(path)  # the package's readers, as text ('' for a missing field)
+    try:
+        rows, header = read_rows(path)
+    except pd.errors.EmptyDataError:
         return {"columns": [], "units": units, "docs": docs, "rows": []}
-    return {"columns": rows[0], "units": units, "docs": docs, "rows": rows[1:]}
+    return {"columns": header, "units": units, "docs": docs, "rows": [[row[c] for c in header] for row in rows]}
 
 
 def number(text):

@@ -2,10 +2,10 @@
 """Figures of an ensemble (Naylor 2004, Figs 5.14, 5.16-5.22 and the thrust-sheet cycles of 5.4.5-5.4.7).
 
 Usage:
-    /usr/bin/python3 python/ensemble_charts.py DIR
+    python3 -m orogen.charts.ensemble DIR
 
 DIR is an `orogen ensemble` folder whose statistics are made (aggregate/, written by
-`orogen ensemble` or python/ensemble_stats.py). For each aggregate (DIR/aggregate, or
+`orogen ensemble` or python3 -m orogen.stats). For each aggregate (DIR/aggregate, or
 DIR/aggregate/GROUP with several groups) writes into its charts/ folder, atomically:
 
     fig5_14_fronts_members.png   Dp, Mp, Dr, Mr, T of every member against S on one chart
@@ -29,25 +29,23 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import ensemble_stats as es  # noqa: E402
-import orogen_io as oio  # noqa: E402
+from .. import atomic, stats as es, tables  # noqa: E402
 
 FRONT_STYLE = {"Dp": ("C0", "-"), "Mp": ("C0", "--"), "Dr": ("C3", "-"), "Mr": ("C3", "--"), "T": ("0.4", ":")}
 
 
 def table(path):
-    cols, _ = oio.read_table(path)
+    cols, _ = tables.read_table(path)
     return {k: np.asarray(v, dtype=float) for k, v in cols.items()}
 
 
 def text_rows(path):
-    return oio.read_rows(path)[0]
+    return tables.read_rows(path)[0]
 
 
 def save(fig, path):
     os.makedirs(os.path.dirname(path), exist_ok=True)
-    oio.save_figure(fig, path)
+    atomic.save_figure(fig, path)
 
 
 def charts(agg, folder, names, title):
@@ -150,7 +148,7 @@ def charts(agg, folder, names, title):
 
 def main(argv):
     if len(argv) != 1:
-        print("usage: ensemble_charts.py DIR", file=sys.stderr)
+        print("usage: python3 -m orogen.charts.ensemble DIR", file=sys.stderr)
         return 2
     folder = argv[0]
     try:
@@ -173,7 +171,7 @@ def main(argv):
         done += 1
     if not done:
         print(f"ensemble_charts: {folder} holds no statistics (aggregate/mean_fronts.csv): run "
-              "python/ensemble_stats.py on it first", file=sys.stderr)
+              "python3 -m orogen.stats on it first", file=sys.stderr)
         return 2
     return 0
 
