@@ -404,7 +404,8 @@ def results(folder, plan, status, per_member, series_of):
     write(os.path.join(folder, "results.csv"),
           csv_text(f"Orogen ensemble results of {title}: one row per member", cols, rows))
     md = f"# {title}: ensemble results\n\n"
-    done = sum(1 for r in rows if r[3] == "0")
+    status = [c[0] for c in cols].index("exit_status")
+    done = sum(1 for r in rows if r[status] == "0")
     md += f"{len(rows)} members, {done} finished. Aggregate statistics in `aggregate/` (docs/ensembles.md).\n\n"
     md += md_table([c[0] for c in cols], rows, [False, False, False] + [True] * (len(cols) - 4) + [False])
     md += "\nNumbers are rounded to 4 significant digits here; `results.csv` has them exactly.\n\n"

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <optional>
 #include <thread>
 
 #include "config/config.hpp"
@@ -15,6 +16,7 @@
 #include "ensemble/ensemble_plan.hpp"
 #include "ensemble/ensemble_pool.hpp"
 #include "io/atomic_file.hpp"
+#include "io/file_lock.hpp"
 #include "sweep/sweep_log_tail.hpp"
 #include "sweep/sweep_report.hpp"
 #include "sweep/sweep_run_state.hpp"
@@ -26,18 +28,6 @@ namespace orogen {
 namespace {
 
 constexpr int kUnknown = -1;  // a member's status not known on this rank
-
-// One ensemble at a time per folder (on rank 0): two would run the same members twice. The
-// descriptor stays open, holding the lock, until the process ends.
-void lock_folder(const fs::path& out) {
-  const fs::path lock = out / "ensemble.lock";
-  const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error(fmt::format("cannot create {}", lock.string()));
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    ::close(fd);
-    throw std::runtime_error(fmt::format("another ensemble is running in {}", out.string()));
-  }
-}
 
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
@@ -93,6 +83,7 @@ int ensemble_command(const EnsembleOptions& opt) {
   const bool root = mpi.rank() == 0;
   EnsemblePlan plan;
   std::string error;
+  std::optional<FileLock> folder_lock;  // rank 0: one ensemble at a time per folder, until we end
   // 1. The plan: every member's configuration checked before anything is written.
   try {
     plan = load_ensemble(opt.file);
@@ -109,7 +100,7 @@ int ensemble_command(const EnsembleOptions& opt) {
       std::error_code ec;
       fs::create_directories(opt.out, ec);
       if (ec) throw std::runtime_error(fmt::format("cannot create the ensemble folder {}: {}", opt.out.string(), ec.message()));
-      lock_folder(opt.out);
+      folder_lock.emplace(lock_command_folder(opt.out / "ensemble.lock", "ensemble"));
       fs::create_directories(opt.out / "members");
       fs::create_directories(opt.out / "logs");
       write_file_atomically(opt.out / "ensemble.toml", plan_to_toml(plan));

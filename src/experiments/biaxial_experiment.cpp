@@ -12,6 +12,7 @@
 #include "analysis/contact_stats.hpp"
 #include "analysis/surface.hpp"
 #include "config/config.hpp"
+#include "experiments/series_table.hpp"
 #include "experiments/settled_layer.hpp"
 #include "experiments/spec_from_config.hpp"
 
@@ -172,32 +173,63 @@ BiaxialRow BiaxialExperiment::row(const World& w) const {
   return r;
 }
 
-std::vector<SeriesColumn> BiaxialExperiment::columns() const {
-  return {{"step", "model time step [-]"},
-          {"time", "model time since the sample was settled [sqrt(d/g)]"},
-          {"phase", "0 consolidating isotropically to sigma3, 1 shearing, 2 done [-]"},
-          {"axial_strain", "axial shortening since shearing began, (H0 - H) / H0 (0 before) [-]"},
-          {"vol_strain", "area change since shearing began, (A - A0) / A0, positive when dilating [-]"},
-          {"width", "distance between the side walls [d]"},
-          {"height", "distance between the top and bottom walls [d]"},
-          {"sigma1", "axial stress: mean of the top and bottom wall forces per width, averaged since the "
-                     "previous output [m g / d^2]"},
-          {"sigma3", "confining stress: mean of the side wall forces per height, averaged since the previous "
-                     "output [m g / d^2]"},
-          {"phi_deg", "mobilised friction angle asin((sigma1 - sigma3) / (sigma1 + sigma3)) [deg]"},
-          {"mu_mobilised", "tan(phi): the mobilised bulk friction coefficient [-]"},
-          {"coordination",
-           "mean number of touching neighbours per disc (walls and discs of the same cluster excluded) [-]"},
-          {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
-          {"n_discs", "number of discs [-]"}};
-}
+namespace {
+
+// One output's measurements, in the units of series.csv (kSeries names each field's column).
+struct BiaxialSample {
+  double step, time, phase, axial_strain, vol_strain, width, height, sigma1, sigma3, phi_deg, mu_mobilised,
+      coordination, kinetic_energy, n_discs;
+};
+
+using Entry = SeriesEntry<BiaxialSample>;
+constexpr std::array kSeries = {
+    Entry{"step", "-", "model time step", &BiaxialSample::step},
+    Entry{"time", "sqrt(d/g)", "model time since the sample was settled", &BiaxialSample::time},
+    Entry{"phase", "-", "0 consolidating isotropically to sigma3, 1 shearing, 2 done", &BiaxialSample::phase},
+    Entry{"axial_strain", "-", "axial shortening since shearing began, (H0 - H) / H0 (0 before)",
+          &BiaxialSample::axial_strain},
+    Entry{"vol_strain", "-", "area change since shearing began, (A - A0) / A0, positive when dilating",
+          &BiaxialSample::vol_strain},
+    Entry{"width", "d", "distance between the side walls", &BiaxialSample::width},
+    Entry{"height", "d", "distance between the top and bottom walls", &BiaxialSample::height},
+    Entry{"sigma1", "m g / d^2",
+          "axial stress: mean of the top and bottom wall forces per width, averaged since the previous output",
+          &BiaxialSample::sigma1},
+    Entry{"sigma3", "m g / d^2",
+          "confining stress: mean of the side wall forces per height, averaged since the previous output",
+          &BiaxialSample::sigma3},
+    Entry{"phi_deg", "deg", "mobilised friction angle asin((sigma1 - sigma3) / (sigma1 + sigma3))",
+          &BiaxialSample::phi_deg},
+    Entry{"mu_mobilised", "-", "tan(phi): the mobilised bulk friction coefficient", &BiaxialSample::mu_mobilised},
+    Entry{"coordination", "-",
+          "mean number of touching neighbours per disc (walls and discs of the same cluster excluded)",
+          &BiaxialSample::coordination},
+    Entry{"kinetic_energy", "m g d", "mean kinetic energy per disc", &BiaxialSample::kinetic_energy},
+    Entry{"n_discs", "-", "number of discs", &BiaxialSample::n_discs},
+};
+
+}  // namespace
+
+std::vector<SeriesColumn> BiaxialExperiment::columns() const { return series_columns(kSeries); }
 
 std::vector<double> BiaxialExperiment::measure(const World& w) const {
   const BiaxialRow r = row(w);
   const double phi = mobilised_friction(r.sigma1, r.sigma3);
-  return {static_cast<double>(w.step), w.time, static_cast<double>(phase_), r.axial_strain, r.vol_strain,
-          sample_width(w), sample_height(w), r.sigma1, r.sigma3, phi * kDegPerRad, std::tan(phi),
-          measure_contacts(w).contacts_per_disc, mean_kinetic_energy(w), static_cast<double>(w.discs.size())};
+  const BiaxialSample sample{.step = static_cast<double>(w.step),
+                             .time = w.time,
+                             .phase = static_cast<double>(phase_),
+                             .axial_strain = r.axial_strain,
+                             .vol_strain = r.vol_strain,
+                             .width = sample_width(w),
+                             .height = sample_height(w),
+                             .sigma1 = r.sigma1,
+                             .sigma3 = r.sigma3,
+                             .phi_deg = phi * kDegPerRad,
+                             .mu_mobilised = std::tan(phi),
+                             .coordination = measure_contacts(w).contacts_per_disc,
+                             .kinetic_energy = mean_kinetic_energy(w),
+                             .n_discs = static_cast<double>(w.discs.size())};
+  return series_values(kSeries, sample);
 }
 
 void BiaxialExperiment::after_output(const World& w) {

@@ -10,6 +10,7 @@
 #include "analysis/contact_stats.hpp"
 #include "analysis/surface.hpp"
 #include "config/config.hpp"
+#include "experiments/series_table.hpp"
 #include "experiments/spec_from_config.hpp"
 #include "io/snapshot_writer.hpp"
 
@@ -70,30 +71,54 @@ bool PackingExperiment::advance(World& w) {
   return true;
 }
 
-std::vector<SeriesColumn> PackingExperiment::columns() const {
-  return {{"step", "model time step [-]"},
-          {"time", "model time [sqrt(d/g)]"},
-          {"phase", "settling phase: 0 falling, 1 re-settling after trimming to the target thickness, "
-                    "2 relaxing without drag, 3 done [-]"},
-          {"n_discs", "number of discs [-]"},
-          {"n_clusters", "number of rigid clusters [-]"},
-          {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
-          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded) [-]"},
-          {"max_overlap", "largest disc-disc overlap [d]"},
-          {"surface_mean", "mean height of the upper surface [d]"}};
-}
+namespace {
+
+// One output's measurements, in the units of series.csv (kSeries names each field's column).
+struct PackingSample {
+  double step, time, phase, n_discs, n_clusters, kinetic_energy, contacts_per_disc, max_overlap, surface_mean;
+};
+
+using Entry = SeriesEntry<PackingSample>;
+constexpr std::array kSeries = {
+    Entry{"step", "-", "model time step", &PackingSample::step},
+    Entry{"time", "sqrt(d/g)", "model time", &PackingSample::time},
+    Entry{"phase", "-",
+          "settling phase: 0 falling, 1 re-settling after trimming to the target thickness, 2 relaxing without drag, 3 "
+          "done",
+          &PackingSample::phase},
+    Entry{"n_discs", "-", "number of discs", &PackingSample::n_discs},
+    Entry{"n_clusters", "-", "number of rigid clusters", &PackingSample::n_clusters},
+    Entry{"kinetic_energy", "m g d", "mean kinetic energy per disc", &PackingSample::kinetic_energy},
+    Entry{"contacts_per_disc", "-", "mean number of touching neighbours per disc (walls excluded)",
+          &PackingSample::contacts_per_disc},
+    Entry{"max_overlap", "d", "largest disc-disc overlap", &PackingSample::max_overlap},
+    Entry{"surface_mean", "d", "mean height of the upper surface", &PackingSample::surface_mean},
+};
+
+}  // namespace
+
+std::vector<SeriesColumn> PackingExperiment::columns() const { return series_columns(kSeries); }
 
 std::vector<double> PackingExperiment::measure(const World& w) const {
   const auto stats = measure_contacts(w);
-  const Surface s = measure_surface(w.discs, 0.0, packing_.length,
-                                    settle_.column_width_factor * mean_radius(w.discs));
+  const Surface s = measure_surface(w.discs, 0.0, packing_.length, settle_.column_width_factor * mean_radius(w.discs));
   double sum = 0;
   int n = 0;
   for (double h : s.height)
-    if (std::isfinite(h)) { sum += h; ++n; }
-  return {static_cast<double>(w.step), w.time, static_cast<double>(phase_),
-          static_cast<double>(w.discs.size()), static_cast<double>(w.clusters.size()),
-          mean_kinetic_energy(w), stats.contacts_per_disc, stats.max_overlap, n ? sum / n : 0.0};
+    if (std::isfinite(h)) {
+      sum += h;
+      ++n;
+    }
+  const PackingSample sample{.step = static_cast<double>(w.step),
+                             .time = w.time,
+                             .phase = static_cast<double>(phase_),
+                             .n_discs = static_cast<double>(w.discs.size()),
+                             .n_clusters = static_cast<double>(w.clusters.size()),
+                             .kinetic_energy = mean_kinetic_energy(w),
+                             .contacts_per_disc = stats.contacts_per_disc,
+                             .max_overlap = stats.max_overlap,
+                             .surface_mean = n ? sum / n : 0.0};
+  return series_values(kSeries, sample);
 }
 
 void PackingExperiment::save(ArchiveWriter& out) const { state_fields(*this, ArchiveSaver(out)); }

@@ -10,6 +10,7 @@
 
 #include "analysis/contact_stats.hpp"
 #include "config/config.hpp"
+#include "experiments/series_table.hpp"
 #include "experiments/settled_layer.hpp"
 #include "experiments/spec_from_config.hpp"
 #include "io/atomic_file.hpp"
@@ -96,33 +97,58 @@ ProfileFit ReposeExperiment::profile(const World& w) const {
   return fit_profile(s, 0.0, spec_.size, base_, top_ - 1.5 * spec_.packing.d_max);
 }
 
-std::vector<SeriesColumn> ReposeExperiment::columns() const {
-  return {{"step", "model time step [-]"},
-          {"time", "model time since the wall was opened [sqrt(d/g)]"},
-          {"n_discs", "discs in the box [-]"},
-          {"n_removed", "discs that left through the open side so far [-]"},
-          {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
-          {"contacts_per_disc", "mean number of touching neighbours per disc (walls excluded) [-]"},
-          {"angle", "surface slope: least-squares line through the slope columns, descending to the open side [deg]"},
-          {"angle_r2", "coefficient of determination of that line [-]"},
-          {"angle_rms", "root-mean-square distance of the slope columns from that line [d]"},
-          {"concavity", "descent angle of a quadratic fit at the top of the slope minus at its foot; "
-                        "> 0 concave, ~0 planar [deg]"},
-          {"slope_x_lo", "left end of the fitted slope (column centre) [d]"},
-          {"slope_x_hi", "right end of the fitted slope (column centre) [d]"},
-          {"n_columns", "surface columns on the slope used by the fits [-]"}};
-}
+namespace {
+
+// One output's measurements, in the units of series.csv (kSeries names each field's column).
+struct ReposeSample {
+  double step, time, n_discs, n_removed, kinetic_energy, contacts_per_disc, angle, angle_r2, angle_rms, concavity,
+      slope_x_lo, slope_x_hi, n_columns;
+};
+
+using Entry = SeriesEntry<ReposeSample>;
+constexpr std::array kSeries = {
+    Entry{"step", "-", "model time step", &ReposeSample::step},
+    Entry{"time", "sqrt(d/g)", "model time since the wall was opened", &ReposeSample::time},
+    Entry{"n_discs", "-", "discs in the box", &ReposeSample::n_discs},
+    Entry{"n_removed", "-", "discs that left through the open side so far", &ReposeSample::n_removed},
+    Entry{"kinetic_energy", "m g d", "mean kinetic energy per disc", &ReposeSample::kinetic_energy},
+    Entry{"contacts_per_disc", "-", "mean number of touching neighbours per disc (walls excluded)",
+          &ReposeSample::contacts_per_disc},
+    Entry{"angle", "deg", "surface slope: least-squares line through the slope columns, descending to the open side",
+          &ReposeSample::angle},
+    Entry{"angle_r2", "-", "coefficient of determination of that line", &ReposeSample::angle_r2},
+    Entry{"angle_rms", "d", "root-mean-square distance of the slope columns from that line", &ReposeSample::angle_rms},
+    Entry{"concavity", "deg",
+          "descent angle of a quadratic fit at the top of the slope minus at its foot; > 0 concave, ~0 planar",
+          &ReposeSample::concavity},
+    Entry{"slope_x_lo", "d", "left end of the fitted slope (column centre)", &ReposeSample::slope_x_lo},
+    Entry{"slope_x_hi", "d", "right end of the fitted slope (column centre)", &ReposeSample::slope_x_hi},
+    Entry{"n_columns", "-", "surface columns on the slope used by the fits", &ReposeSample::n_columns},
+};
+
+}  // namespace
+
+std::vector<SeriesColumn> ReposeExperiment::columns() const { return series_columns(kSeries); }
 
 std::vector<double> ReposeExperiment::measure(const World& w) const {
   const ProfileFit f = profile(w);
   const auto stats = measure_contacts(w);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto n = static_cast<std::int64_t>(w.discs.size());
-  return {static_cast<double>(w.step), w.time, static_cast<double>(n), static_cast<double>(initial_discs_ - n),
-          mean_kinetic_energy(w), stats.contacts_per_disc,
-          f.valid() ? -std::atan(f.slope) * kDegPerRad : nan, f.valid() ? f.r2 : nan, f.valid() ? f.rms : nan,
-          f.valid() ? f.concavity * kDegPerRad : nan, f.valid() ? f.x_lo : nan, f.valid() ? f.x_hi : nan,
-          static_cast<double>(f.n)};
+  const ReposeSample sample{.step = static_cast<double>(w.step),
+                            .time = w.time,
+                            .n_discs = static_cast<double>(n),
+                            .n_removed = static_cast<double>(initial_discs_ - n),
+                            .kinetic_energy = mean_kinetic_energy(w),
+                            .contacts_per_disc = stats.contacts_per_disc,
+                            .angle = f.valid() ? -std::atan(f.slope) * kDegPerRad : nan,
+                            .angle_r2 = f.valid() ? f.r2 : nan,
+                            .angle_rms = f.valid() ? f.rms : nan,
+                            .concavity = f.valid() ? f.concavity * kDegPerRad : nan,
+                            .slope_x_lo = f.valid() ? f.x_lo : nan,
+                            .slope_x_hi = f.valid() ? f.x_hi : nan,
+                            .n_columns = static_cast<double>(f.n)};
+  return series_values(kSeries, sample);
 }
 
 std::vector<SummaryValue> ReposeExperiment::summary(const World& w) const {

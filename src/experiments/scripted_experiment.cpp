@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "config/config.hpp"
+#include "experiments/series_table.hpp"
 #include "util/units.hpp"
 
 namespace orogen {
@@ -27,16 +28,28 @@ bool ScriptedExperiment::advance(World& w) {
   return w.time < end;
 }
 
-std::vector<SeriesColumn> ScriptedExperiment::columns() const {
-  return {{"step", "model time step [-]"},
-          {"time", "model time [sqrt(d/g)]"},
-          {"n_discs", "discs in the world [-]"},
-          {"n_removed", "discs removed so far (removals.csv says why) [-]"},
-          {"kinetic_energy", "mean kinetic energy per disc [m g d]"},
-          {"x_min", "left edge of the leftmost disc (NaN without discs) [d]"},
-          {"x_max", "right edge of the rightmost disc (NaN without discs) [d]"},
-          {"y_max", "top of the highest disc (NaN without discs) [d]"}};
-}
+namespace {
+
+// One output's measurements, in the units of series.csv (kSeries names each field's column).
+struct ScriptedSample {
+  double step, time, n_discs, n_removed, kinetic_energy, x_min, x_max, y_max;
+};
+
+using Entry = SeriesEntry<ScriptedSample>;
+constexpr std::array kSeries = {
+    Entry{"step", "-", "model time step", &ScriptedSample::step},
+    Entry{"time", "sqrt(d/g)", "model time", &ScriptedSample::time},
+    Entry{"n_discs", "-", "discs in the world", &ScriptedSample::n_discs},
+    Entry{"n_removed", "-", "discs removed so far (removals.csv says why)", &ScriptedSample::n_removed},
+    Entry{"kinetic_energy", "m g d", "mean kinetic energy per disc", &ScriptedSample::kinetic_energy},
+    Entry{"x_min", "d", "left edge of the leftmost disc (NaN without discs)", &ScriptedSample::x_min},
+    Entry{"x_max", "d", "right edge of the rightmost disc (NaN without discs)", &ScriptedSample::x_max},
+    Entry{"y_max", "d", "top of the highest disc (NaN without discs)", &ScriptedSample::y_max},
+};
+
+}  // namespace
+
+std::vector<SeriesColumn> ScriptedExperiment::columns() const { return series_columns(kSeries); }
 
 std::vector<double> ScriptedExperiment::measure(const World& w) const {
   const auto& d = w.discs;
@@ -47,8 +60,15 @@ std::vector<double> ScriptedExperiment::measure(const World& w) const {
     x_max = i ? std::max(x_max, d.x[i] + d.radius[i]) : d.x[i] + d.radius[i];
     y_max = i ? std::max(y_max, d.y[i] + d.radius[i]) : d.y[i] + d.radius[i];
   }
-  return {static_cast<double>(w.step), w.time, static_cast<double>(d.size()),
-          static_cast<double>(w.removals.size()), mean_kinetic_energy(w), x_min, x_max, y_max};
+  const ScriptedSample sample{.step = static_cast<double>(w.step),
+                              .time = w.time,
+                              .n_discs = static_cast<double>(d.size()),
+                              .n_removed = static_cast<double>(w.removals.size()),
+                              .kinetic_energy = mean_kinetic_energy(w),
+                              .x_min = x_min,
+                              .x_max = x_max,
+                              .y_max = y_max};
+  return series_values(kSeries, sample);
 }
 
 std::string ScriptedExperiment::status(const World& w) const {

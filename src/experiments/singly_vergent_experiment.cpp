@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "config/config.hpp"
+#include "experiments/series_table.hpp"
 #include "experiments/settled_layer.hpp"
 #include "experiments/spec_from_config.hpp"
 
@@ -92,31 +93,60 @@ SinglyVergentShape SinglyVergentExperiment::shape(const World& w) const {
   return g;
 }
 
-std::vector<SeriesColumn> SinglyVergentExperiment::columns() const {
-  return {{"step", "model time step [-]"},
-          {"time", "model time since the backstop started [sqrt(d/g)]"},
-          {"shortening", "backstop displacement / h0 [-]"},
-          {"backstop", "x of the backstop [h0]"},
-          {"front", "deformation front: left end of the surface raised above h0 + 1.5 d_max, contiguous from the backstop [h0]"},
-          {"width", "wedge width: backstop minus front [h0]"},
-          {"height", "highest surface point of the wedge minus h0 [h0]"},
-          {"taper", "wedge taper: least-squares slope of the surface from the front to the backstop [deg]"},
-          {"taper_front", "least-squares surface slope over the front half of the wedge [deg]"},
-          {"taper_back", "least-squares surface slope over the back half, next to the backstop [deg]"},
-          {"taper_mean", "atan(height / width) [deg]"},
-          {"slip_base", "fraction of touching basal contacts at the Coulomb limit [-]"},
-          {"n_discs", "discs in the model [-]"}};
-}
+namespace {
+
+// One output's measurements, in the units of series.csv (kSeries names each field's column).
+struct SinglyVergentSample {
+  double step, time, shortening, backstop, front, width, height, taper, taper_front, taper_back, taper_mean, slip_base,
+      n_discs;
+};
+
+using Entry = SeriesEntry<SinglyVergentSample>;
+constexpr std::array kSeries = {
+    Entry{"step", "-", "model time step", &SinglyVergentSample::step},
+    Entry{"time", "sqrt(d/g)", "model time since the backstop started", &SinglyVergentSample::time},
+    Entry{"shortening", "-", "backstop displacement / h0", &SinglyVergentSample::shortening},
+    Entry{"backstop", "h0", "x of the backstop", &SinglyVergentSample::backstop},
+    Entry{"front", "h0",
+          "deformation front: left end of the surface raised above h0 + 1.5 d_max, contiguous from the backstop",
+          &SinglyVergentSample::front},
+    Entry{"width", "h0", "wedge width: backstop minus front", &SinglyVergentSample::width},
+    Entry{"height", "h0", "highest surface point of the wedge minus h0", &SinglyVergentSample::height},
+    Entry{"taper", "deg", "wedge taper: least-squares slope of the surface from the front to the backstop",
+          &SinglyVergentSample::taper},
+    Entry{"taper_front", "deg", "least-squares surface slope over the front half of the wedge",
+          &SinglyVergentSample::taper_front},
+    Entry{"taper_back", "deg", "least-squares surface slope over the back half, next to the backstop",
+          &SinglyVergentSample::taper_back},
+    Entry{"taper_mean", "deg", "atan(height / width)", &SinglyVergentSample::taper_mean},
+    Entry{"slip_base", "-", "fraction of touching basal contacts at the Coulomb limit",
+          &SinglyVergentSample::slip_base},
+    Entry{"n_discs", "-", "discs in the model", &SinglyVergentSample::n_discs},
+};
+
+}  // namespace
+
+std::vector<SeriesColumn> SinglyVergentExperiment::columns() const { return series_columns(kSeries); }
 
 std::vector<double> SinglyVergentExperiment::measure(const World& w) const {
   const SinglyVergentShape g = shape(w);
   const WallContactStats base = w.wall_contact_stats(w.wall_index(kBoxFloor));
   const double h0 = spec_.h0;
   auto or_nan = [&](double v) { return g.has_wedge ? v : kNaN; };
-  return {static_cast<double>(w.step), w.time, shortening(w), g.backstop / h0, or_nan(g.front / h0),
-          or_nan((g.backstop - g.front) / h0), or_nan(g.height / h0), or_nan(g.taper * kDegPerRad),
-          or_nan(g.taper_front * kDegPerRad), or_nan(g.taper_back * kDegPerRad), or_nan(g.taper_mean * kDegPerRad),
-          base.slip_fraction(), static_cast<double>(w.discs.size())};
+  const SinglyVergentSample sample{.step = static_cast<double>(w.step),
+                                   .time = w.time,
+                                   .shortening = shortening(w),
+                                   .backstop = g.backstop / h0,
+                                   .front = or_nan(g.front / h0),
+                                   .width = or_nan((g.backstop - g.front) / h0),
+                                   .height = or_nan(g.height / h0),
+                                   .taper = or_nan(g.taper * kDegPerRad),
+                                   .taper_front = or_nan(g.taper_front * kDegPerRad),
+                                   .taper_back = or_nan(g.taper_back * kDegPerRad),
+                                   .taper_mean = or_nan(g.taper_mean * kDegPerRad),
+                                   .slip_base = base.slip_fraction(),
+                                   .n_discs = static_cast<double>(w.discs.size())};
+  return series_values(kSeries, sample);
 }
 
 std::vector<std::pair<std::string, double>> SinglyVergentExperiment::scalars(const World& w) const {

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "analysis/wedge_geometry.hpp"
+#include "experiments/series_table.hpp"
 #include "experiments/settled_layer.hpp"
 
 namespace orogen {
@@ -204,32 +205,45 @@ Surface WedgeExperiment::surface(const World& w) const {
   return measure_surface(w.discs, window_pro_ - spec_.h0, x_end_, spec_.column_width_factor * r_mean);
 }
 
-std::vector<SeriesColumn> WedgeExperiment::columns() const {
-  return {{"step", "model time step [-]"},
-          {"time", "model time [sqrt(d/g)]"},
-          {"S", "normalised convergence: plate displacement / h0 [-]"},
-          {"H", "wedge height: highest elevation minus h0 [h0]"},
-          {"Dp", "pro-side deformation front: smallest x of discs above h0 + d_max, from the S-point [h0]"},
-          {"Mp", "pro-side marker front: smallest x of discs above the marker height [h0]"},
-          {"Dr", "retro-side deformation front: largest x of discs above h0 + d_max [h0]"},
-          {"Mr", "retro-side marker front: largest x of discs above the marker height [h0]"},
-          {"T", "x of the highest disc (peak), from the S-point [h0]"},
-          {"alpha", "mean pro-wedge taper: slope from Dp up to the peak [deg]"},
-          {"beta", "mean retro-wedge taper: slope from the peak down to Dr [deg]"},
-          {"alpha_fit", "least-squares slope of the surface between Dp and the peak [deg]"},
-          {"beta_fit", "least-squares slope of the surface between the peak and Dr, sign flipped [deg]"},
-          {"slip_pro", "fraction of touching pro-side basal contacts at the Coulomb limit [-]"},
-          {"slip_retro", "fraction of touching retro-side basal contacts at the Coulomb limit [-]"},
-          {"n_active", "discs in the force computation that move by forces (dynamic) [-]"},
-          {"n_discs", "discs in the model (active and kinematic slab) [-]"},
-          {"n_eroded", "discs removed by erosion so far [-]"},
-          {"n_left", "discs that left the model space so far [-]"},
-          {"n_entered", "discs ever added (initial layer and inflow); n_entered = n_discs + n_eroded + n_left [-]"},
-          {"window_pro", "pro-side edge of the active region, from the S-point [h0]"},
-          {"window_retro", "retro-side edge of the active region, from the S-point [h0]"}};
-}
+namespace {
 
-std::vector<double> WedgeExperiment::measure(const World& w) const {
+using Entry = SeriesEntry<WedgeSample>;
+constexpr std::array kWedgeSeries = {
+    Entry{"step", "-", "model time step", &WedgeSample::step},
+    Entry{"time", "sqrt(d/g)", "model time", &WedgeSample::time},
+    Entry{"S", "-", "normalised convergence: plate displacement / h0", &WedgeSample::S},
+    Entry{"H", "h0", "wedge height: highest elevation minus h0", &WedgeSample::H},
+    Entry{"Dp", "h0", "pro-side deformation front: smallest x of discs above h0 + d_max, from the S-point",
+          &WedgeSample::Dp},
+    Entry{"Mp", "h0", "pro-side marker front: smallest x of discs above the marker height", &WedgeSample::Mp},
+    Entry{"Dr", "h0", "retro-side deformation front: largest x of discs above h0 + d_max", &WedgeSample::Dr},
+    Entry{"Mr", "h0", "retro-side marker front: largest x of discs above the marker height", &WedgeSample::Mr},
+    Entry{"T", "h0", "x of the highest disc (peak), from the S-point", &WedgeSample::T},
+    Entry{"alpha", "deg", "mean pro-wedge taper: slope from Dp up to the peak", &WedgeSample::alpha},
+    Entry{"beta", "deg", "mean retro-wedge taper: slope from the peak down to Dr", &WedgeSample::beta},
+    Entry{"alpha_fit", "deg", "least-squares slope of the surface between Dp and the peak", &WedgeSample::alpha_fit},
+    Entry{"beta_fit", "deg", "least-squares slope of the surface between the peak and Dr, sign flipped",
+          &WedgeSample::beta_fit},
+    Entry{"slip_pro", "-", "fraction of touching pro-side basal contacts at the Coulomb limit", &WedgeSample::slip_pro},
+    Entry{"slip_retro", "-", "fraction of touching retro-side basal contacts at the Coulomb limit",
+          &WedgeSample::slip_retro},
+    Entry{"n_active", "-", "discs in the force computation that move by forces (dynamic)", &WedgeSample::n_active},
+    Entry{"n_discs", "-", "discs in the model (active and kinematic slab)", &WedgeSample::n_discs},
+    Entry{"n_eroded", "-", "discs removed by erosion so far", &WedgeSample::n_eroded},
+    Entry{"n_left", "-", "discs that left the model space so far", &WedgeSample::n_left},
+    Entry{"n_entered", "-", "discs ever added (initial layer and inflow); n_entered = n_discs + n_eroded + n_left",
+          &WedgeSample::n_entered},
+    Entry{"window_pro", "h0", "pro-side edge of the active region, from the S-point", &WedgeSample::window_pro},
+    Entry{"window_retro", "h0", "retro-side edge of the active region, from the S-point", &WedgeSample::window_retro},
+};
+
+}  // namespace
+
+std::vector<SeriesColumn> WedgeExperiment::columns() const { return series_columns(kWedgeSeries); }
+
+std::vector<double> WedgeExperiment::measure(const World& w) const { return series_values(kWedgeSeries, sample(w)); }
+
+WedgeSample WedgeExperiment::sample(const World& w) const {
   const Surface s = surface(w);
   WedgeGeometryInput in{w.discs.x, w.discs.y, w.discs.radius, spec_.h0, spec_.packing.d_max, spec_.marker_height, 0.0};
   const WedgeGeometry g = measure_wedge(in, s);
@@ -242,11 +256,14 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
     left += r.reason == RemovalReason::LeftDomain;
   }
   const double h0 = spec_.h0;
-  return {static_cast<double>(w.step), w.time, convergence(w), g.h / h0, g.dp / h0, g.mp / h0, g.dr / h0, g.mr / h0,
-          g.x_peak / h0, g.alpha * kDegPerRad, g.beta * kDegPerRad, g.alpha_fit * kDegPerRad, g.beta_fit * kDegPerRad,
-          pro.slip_fraction(), retro.slip_fraction(),
-          static_cast<double>(active), static_cast<double>(w.discs.size()), static_cast<double>(eroded),
-          static_cast<double>(left), static_cast<double>(entered_), window_pro_ / h0, window_retro_ / h0};
+  return {.step = static_cast<double>(w.step), .time = w.time, .S = convergence(w), .H = g.h / h0, .Dp = g.dp / h0,
+          .Mp = g.mp / h0, .Dr = g.dr / h0, .Mr = g.mr / h0, .T = g.x_peak / h0, .alpha = g.alpha * kDegPerRad,
+          .beta = g.beta * kDegPerRad, .alpha_fit = g.alpha_fit * kDegPerRad, .beta_fit = g.beta_fit * kDegPerRad,
+          .slip_pro = pro.slip_fraction(), .slip_retro = retro.slip_fraction(),
+          .n_active = static_cast<double>(active), .n_discs = static_cast<double>(w.discs.size()),
+          .n_eroded = static_cast<double>(eroded), .n_left = static_cast<double>(left),
+          .n_entered = static_cast<double>(entered_), .window_pro = window_pro_ / h0,
+          .window_retro = window_retro_ / h0};
 }
 
 std::vector<SnapshotField> WedgeExperiment::fields(const World& w) const {
@@ -260,8 +277,8 @@ std::vector<std::pair<std::string, double>> WedgeExperiment::scalars(const World
 
 void WedgeExperiment::after_output(const World& w) {
   displacements_.remember(w);
-  const std::vector<double> m = measure(w);  // the order of columns()
-  history_.record({m[2], m[3], m[4], m[5], m[6], m[7], m[8], m[9], m[10]});
+  const WedgeSample m = sample(w);
+  history_.record({m.S, m.H, m.Dp, m.Mp, m.Dr, m.Mr, m.T, m.alpha, m.beta});
 }
 
 std::vector<SummaryValue> WedgeExperiment::summary(const World&) const { return history_.summary(0.25 * spec_.s_end); }

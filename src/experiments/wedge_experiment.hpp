@@ -44,6 +44,13 @@ struct WedgeSpec {
   SettleSpec settle;
 };
 
+// One output's measurements of the wedge, in the units of series.csv (the table in
+// wedge_experiment.cpp names each field's column).
+struct WedgeSample {
+  double step, time, S, H, Dp, Mp, Dr, Mr, T, alpha, beta, alpha_fit, beta_fit, slip_pro, slip_retro, n_active,
+      n_discs, n_eroded, n_left, n_entered, window_pro, window_retro;
+};
+
 class WedgeExperiment final : public Experiment {
  public:
   explicit WedgeExperiment(WedgeSpec spec) : spec_(std::move(spec)) {}
@@ -80,6 +87,7 @@ class WedgeExperiment final : public Experiment {
   void erode(World& world);
   void remove_strays(World& world);
   Surface surface(const World& world) const;
+  WedgeSample sample(const World& world) const;
   // Margin cut off each side of the settled box, where its walls loosened the packing.
   double tile_margin() const { return tile_margin_for(spec_.h0); }
   // Kinematic slab kept beyond the pro window: the transition band and the surface

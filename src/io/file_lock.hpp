@@ -2,6 +2,7 @@
 // An exclusive advisory lock (flock) on one file, held while the object lives. The kernel drops
 // it when the process dies, even by kill -9, so a killed command never leaves a folder locked.
 #include <filesystem>
+#include <string>
 
 namespace orogen {
 
@@ -15,6 +16,8 @@ class FileLock {
   ~FileLock();
   FileLock(const FileLock&) = delete;
   FileLock& operator=(const FileLock&) = delete;
+  FileLock(FileLock&& other) noexcept;
+  FileLock& operator=(FileLock&&) = delete;
 
   bool locked() const { return fd_ >= 0; }
   // errno of a failed open (a read-only or missing folder); 0 when it opened and another
@@ -31,5 +34,10 @@ class FileLock {
   int fd_ = -1;
   int open_error_ = 0;
 };
+
+// The lock file `path` of a command that owns a folder (a sweep, an ensemble), held until the
+// returned lock ends; throws std::runtime_error when the file cannot be created or another
+// `what` ("sweep") already holds it: two would start the same runs twice.
+FileLock lock_command_folder(const std::filesystem::path& path, const std::string& what);
 
 }  // namespace orogen

@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <deque>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <thread>
 
 #include "config/config.hpp"
 #include "io/atomic_file.hpp"
+#include "io/file_lock.hpp"
 #include "io/snapshot_reader.hpp"
 #include "sweep/sweep_log_tail.hpp"
 #include "sweep/sweep_plan.hpp"
@@ -77,18 +79,6 @@ std::string stage_text(const RunInspection& s) {
     case RunStage::Failed: return "failed before (" + status_text(s.failed_status) + ")";
   }
   return "";
-}
-
-// One sweep at a time per folder: two would start the same runs twice. The descriptor stays
-// open, holding the lock, until the process ends.
-void lock_folder(const fs::path& out) {
-  const fs::path lock = out / "sweep.lock";
-  const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error(fmt::format("cannot create {}", lock.string()));
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    ::close(fd);
-    throw std::runtime_error(fmt::format("another sweep is running in {}", out.string()));
-  }
 }
 
 class Sweep {
@@ -290,6 +280,7 @@ class Sweep {
 int sweep_command(const SweepOptions& opt) {
   SweepPlan plan;
   std::vector<RunInspection> states;
+  std::optional<FileLock> folder_lock;  // one sweep at a time per folder, until we end
   try {
     // Everything is checked before anything is started; a bad sweep file writes nothing.
     plan = load_sweep(opt.file);
@@ -301,7 +292,8 @@ int sweep_command(const SweepOptions& opt) {
     std::error_code ec;
     fs::create_directories(opt.out, ec);
     if (ec) throw std::runtime_error(fmt::format("cannot create the sweep folder {}: {}", opt.out.string(), ec.message()));
-    lock_folder(opt.out);  // before looking at the runs: another sweep may be changing them
+    // Before looking at the runs: another sweep may be changing them.
+    folder_lock.emplace(lock_command_folder(opt.out / "sweep.lock", "sweep"));
     for (const auto& run : plan.runs) states.push_back(inspect_run(opt.out / "runs" / run.name, run.resolved_toml));
     fs::create_directories(opt.out / "logs");
     fs::create_directories(opt.out / "runs");

@@ -891,14 +891,16 @@ SINGLY_COLUMNS = ("run", "packing", "mu", "mu_b", "taper_steady_deg", "taper_ste
 
 
 def singly_rows(items, bulk):
+    """One dict per run, keyed by SINGLY_COLUMNS (the columns of singly_table.csv)."""
     rows = []
     for it in items:
         p, mu, mb = it["packing"], it["mu"], it["mu_b"]
         prep = it["prep"]
         b = (bulk.phi(p, mu, prep, "peak"), bulk.phi(p, mu, prep, "residual"), bulk.taper(p, mu, prep, mb, "peak"),
              bulk.taper(p, mu, prep, mb, "residual")) if bulk is not None else (NAN,) * 4
-        rows.append([it["name"], p, mu, mb, it["steady"], it["steady_sd"], it["final"], it["front"], it["back"]]
-                    + list(b) + [thesis_taper(p, mu, mb)])
+        values = [it["name"], p, mu, mb, it["steady"], it["steady_sd"], it["final"], it["front"], it["back"]] \
+            + list(b) + [thesis_taper(p, mu, mb)]
+        rows.append(dict(zip(SINGLY_COLUMNS, values)))
     return rows
 
 
@@ -916,11 +918,14 @@ def singly_markdown(rows, with_bulk):
     header.append("thesis [deg]")
     md = []
     for r in rows:
-        line = [r[0], packing_label(r[1]), "%g" % r[2], "%g" % r[3],
-                ("%s ± %s" % (show(r[4]), show(r[5]))) if finite(r[4]) else "–", show(r[6]), show(r[7]), show(r[8])]
+        steady = r["taper_steady_deg"]
+        line = [r["run"], packing_label(r["packing"]), "%g" % r["mu"], "%g" % r["mu_b"],
+                ("%s ± %s" % (show(steady), show(r["taper_steady_sd_deg"]))) if finite(steady) else "–",
+                show(r["taper_final_deg"]), show(r["taper_front_final_deg"]), show(r["taper_back_final_deg"])]
         if with_bulk:
-            line += ["%s / %s" % (show(r[9], 1), show(r[10], 1)), "%s / %s" % (show(r[11]), show(r[12]))]
-        line.append(show(r[13]))
+            line += ["%s / %s" % (show(r["phi_peak_deg"], 1), show(r["phi_residual_deg"], 1)),
+                     "%s / %s" % (show(r["critical_taper_peak_deg"]), show(r["critical_taper_residual_deg"]))]
+        line.append(show(r["thesis_appendix_a_deg"]))
         md.append(line)
     return out + markdown_table(header, md, [False, False] + [True] * (len(header) - 2))
 
@@ -945,7 +950,7 @@ def make_singly(paths, out_dir, bulk_paths=None):
     written += [os.path.join(out_dir, n) for n in ("singly_taper.png", "singly_profiles.png")]
     rows = singly_rows(items, bulk)
     atomic.write_text(os.path.join(out_dir, "singly_table.md"), singly_markdown(rows, bulk is not None))
-    atomic.write_text(os.path.join(out_dir, "singly_table.csv"), csv_text(list(SINGLY_COLUMNS), rows))
+    atomic.write_text(os.path.join(out_dir, "singly_table.csv"), csv_text(list(SINGLY_COLUMNS), [[r[c] for c in SINGLY_COLUMNS] for r in rows]))
     written += [os.path.join(out_dir, n) for n in ("singly_table.md", "singly_table.csv")]
     return dict(items=items, rows=rows, written=written)
 
@@ -979,7 +984,8 @@ def main(argv=None):
             result = make_singly(args.runs, args.out, args.bulk)
             for r in result["rows"]:
                 print("%s: %s, mu %g, mu_b %g: steady taper %s deg, critical (peak/residual) %s/%s deg"
-                      % (r[0], r[1], r[2], r[3], show(r[4]), show(r[11]), show(r[12])))
+                      % (r["run"], r["packing"], r["mu"], r["mu_b"], show(r["taper_steady_deg"]),
+                         show(r["critical_taper_peak_deg"]), show(r["critical_taper_residual_deg"])))
         else:
             result = make_biaxial(args.runs, args.out)
             for it in result["items"]:
