@@ -4,7 +4,7 @@
 
 #include "ensemble/ensemble_command.hpp"
 #include "subcommand.hpp"
-#include "util/parallel.hpp"
+#include "config/schema.hpp"
 
 namespace orogen::cli {
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "config/schema.hpp"
 #include "subcommand.hpp"
 #include "util/omp_environment.hpp"
 #include "util/parallel.hpp"
@@ -21,7 +22,7 @@ constexpr orogen::cli::AddSubcommand kSubcommands[] = {
 };
 
 // CLI11 reads an unknown first word as a stray argument ("A subcommand is required"): name it.
-bool first_word_is_known(const CLI::App& app, int argc, char** argv) {
+bool first_word_is_known(CLI::App& app, int argc, char** argv) {
   if (argc <= 1) return true;
   const std::string first = argv[1];
   if (first == "-h" || first == "--help" || first == "--version") return true;

@@ -5,7 +5,7 @@
 
 #include "run/runner.hpp"
 #include "subcommand.hpp"
-#include "util/parallel.hpp"
+#include "config/schema.hpp"
 
 namespace orogen::cli {
 

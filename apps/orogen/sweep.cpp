@@ -4,7 +4,7 @@
 
 #include "subcommand.hpp"
 #include "sweep/sweep_command.hpp"
-#include "util/parallel.hpp"
+#include "config/schema.hpp"
 
 namespace orogen::cli {
 

@@ -6,9 +6,9 @@
 #include "boundary/wall.hpp"
 #include "contact/contact_law.hpp"
 #include "contact/contact_store.hpp"
-#include "contact/pair_forces.hpp"
 #include "contact/thread_split.hpp"
 #include "particles/clusters.hpp"
+#include "particles/disc_force.hpp"
 #include "particles/discs.hpp"
 
 namespace orogen {

@@ -17,6 +17,7 @@
 #include "render/animation.hpp"
 #include "render/frame_renderer.hpp"
 #include "run/run_folder.hpp"
+#include "util/command_error.hpp"
 
 namespace fs = std::filesystem;
 
@@ -87,10 +88,7 @@ constexpr int kMaxFps = 240;
 constexpr double kMaxVectorScale = 1e6;
 
 // A refusal with its exit code: 2 bad argument or input file, 1 I/O and everything else.
-struct RenderError : std::runtime_error {
-  RenderError(int code, const std::string& what) : std::runtime_error(what), code(code) {}
-  int code;
-};
+using RenderError = CommandError;  // its exit code chosen where it is thrown
 
 // The frames subfolder is made inside the run folder: a plain name only, so that an argument
 // never writes (or, with ffmpeg's -y, overwrites) files elsewhere.
@@ -309,18 +307,7 @@ int render_checked(const RenderCommandOptions& o) {
 
 int render_command(const RenderCommandOptions& o) {
   // Every failure ends here as one message and a documented exit code, never an uncaught exception.
-  try {
-    return render_checked(o);
-  } catch (const RenderError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return e.code;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "error: render " << o.dir.string() << ": out of memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "error: render " << o.dir.string() << ": " << e.what() << "\n";
-    return 1;
-  }
+  return run_reporting_errors("render " + o.dir.string(), [&] { return render_checked(o); });
 }
 
 }  // namespace orogen

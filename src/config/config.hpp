@@ -11,12 +11,15 @@
 #include <vector>
 
 #include "config/schema.hpp"
+#include "util/command_error.hpp"
 
 namespace orogen {
 
 // A user mistake in the configuration (file or command line).
-struct ConfigError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+// Bad input (exit 2) whose message is a whole line of its own: "config error in ...".
+struct ConfigError : BadInput {
+  explicit ConfigError(const std::string& message) : BadInput(message) {}
+  std::string line() const override { return what(); }
 };
 
 // "config error in SOURCE: KEY = VALUE: ALLOWED"; an empty key or value is left out.

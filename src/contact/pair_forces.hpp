@@ -8,14 +8,10 @@
 #include "contact/contact_store.hpp"
 #include "contact/neighbor_list.hpp"
 #include "contact/thread_split.hpp"
+#include "particles/disc_force.hpp"
 #include "particles/discs.hpp"
 
 namespace orogen {
-
-// Force and torque summed on a disc in one step (one cache line holds a disc's sums).
-struct DiscForce {
-  double fx, fy, torque;
-};
 
 // Per-step scratch of the force stages: the force and torque summed on each disc (by disc
 // index), which integration then uses and zeroes (all zero between steps, so a re-ordered,

@@ -1,10 +1,6 @@
 #include "ensemble/ensemble_command.hpp"
 
-#include <fcntl.h>
-#include <cerrno>
 #include <fmt/format.h>
-#include <sys/file.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <iostream>

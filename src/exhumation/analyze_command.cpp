@@ -18,6 +18,7 @@
 #include "exhumation/analysis_writer.hpp"
 #include "io/file_lock.hpp"
 #include "io/snapshot_reader.hpp"
+#include "util/command_error.hpp"
 
 namespace orogen {
 
@@ -26,10 +27,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // A refusal with its exit code (2 bad input, 1 I/O).
-struct AnalyzeError : std::runtime_error {
-  AnalyzeError(int code, const std::string& what) : std::runtime_error(what), code(code) {}
-  int code;
-};
+using AnalyzeError = CommandError;  // its exit code chosen where it is thrown
 
 std::string list(const std::vector<double>& v) {
   std::string s;
@@ -348,18 +346,7 @@ std::string analysis_settings_error(const AnalysisSettings& s, bool from_config)
 }
 
 int analyze_command(const AnalyzeOptions& o) {
-  try {
-    return analyze(o);
-  } catch (const AnalyzeError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return e.code;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "error: analyze " << o.dir.string() << ": out of memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "error: analyze " << o.dir.string() << ": " << e.what() << "\n";
-    return 1;
-  }
+  return run_reporting_errors("analyze " + o.dir.string(), [&] { return analyze(o); });
 }
 
 }  // namespace orogen

@@ -4,9 +4,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "contact/pair_forces.hpp"
 #include "contact/thread_split.hpp"
 #include "particles/clusters.hpp"
+#include "particles/disc_force.hpp"
 #include "particles/discs.hpp"
 
 namespace orogen {

@@ -7,13 +7,14 @@
 #include <string>
 
 #include "config/config.hpp"
+#include "util/command_error.hpp"
 
 namespace orogen {
 
 // Bad --from (no folder, not a run, an output out of range, another experiment, a key that
 // cannot change): exit code 2.
-struct BranchError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct BranchError : BadInput {
+  using BadInput::BadInput;
 };
 
 struct BranchSource {

@@ -12,13 +12,14 @@
 
 #include "config/run_identity.hpp"
 #include "io/file_lock.hpp"  // what makes the files of a folder one run
+#include "util/command_error.hpp"
 
 namespace orogen {
 
 // A folder that cannot be used as asked (held by another process, holds another run's files,
 // files that do not belong together); exit code 2.
-struct RunFolderError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct RunFolderError : BadInput {
+  using BadInput::BadInput;
 };
 
 // A folder that cannot be created or written (a read-only disk, no permission); exit code 1.

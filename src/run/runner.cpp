@@ -44,8 +44,8 @@ namespace fs = std::filesystem;
 namespace orogen {
 namespace {
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct UsageError : BadInput {
+  using BadInput::BadInput;
 };
 
 // Everything the driver itself must carry across a checkpoint.
@@ -733,18 +733,8 @@ int run_command(const RunOptions& opt) {
       return 3;
     }
     return 0;
-  } catch (const ConfigError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  } catch (const UsageError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  } catch (const BranchError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
-  } catch (const RunFolderError& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
+  } catch (const BadInput& e) {  // a configuration, usage, branch or folder error
+    return report_error(e);
   } catch (const std::exception& e) {
     // Anything else (a file that cannot be written, a full disk) ends the run with its reason.
     if (auto log = spdlog::get("orogen")) log->error("stopped: {}", e.what());  // to the terminal too

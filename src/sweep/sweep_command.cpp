@@ -1,9 +1,6 @@
 #include "sweep/sweep_command.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <sys/file.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <deque>
@@ -22,6 +19,7 @@
 #include "sweep/sweep_report.hpp"
 #include "sweep/sweep_results.hpp"
 #include "sweep/sweep_run_state.hpp"
+#include "util/command_error.hpp"
 
 namespace fs = std::filesystem;
 
@@ -297,12 +295,8 @@ int sweep_command(const SweepOptions& opt) {
     for (const auto& run : plan.runs) states.push_back(inspect_run(opt.out / "runs" / run.name, run.resolved_toml));
     fs::create_directories(opt.out / "logs");
     fs::create_directories(opt.out / "runs");
-  } catch (const ConfigError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return 2;
+  } catch (const std::exception& e) {  // nothing started yet: each failure here is the sweep's input
+    return report_error(e, "", kExitBadInput);
   }
   try {
     Sweep sweep(std::move(plan), opt);
@@ -310,8 +304,7 @@ int sweep_command(const SweepOptions& opt) {
     return sweep.execute();
   } catch (const std::exception& e) {
     // A file the sweep cannot write (results, markers): its children die with it.
-    std::cerr << "error: " << e.what() << "\n";
-    return 1;
+    return report_error(e);
   }
 }
 
