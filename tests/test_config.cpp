@@ -212,5 +212,24 @@ TEST(Config, DocsReferenceMatchesSchema) {
       << "docs/configuration.md is out of date; paste reference_markdown() into it";
 }
 
+// What a resume or a branch may change is declared with the keys (KeyChange), so the run
+// driver names none: the wedge's end and output count extend a run, each extendable end has
+// its output count in the same section, and a key that shaped the state changes nothing.
+TEST(Schema, WhatAResumeOrABranchMayChangeIsDeclaredWithTheKeys) {
+  EXPECT_EQ(keys_that(kRunEnd), std::vector<std::string>{"wedge.s_end"});
+  EXPECT_EQ(keys_that(kOutputCount), std::vector<std::string>{"wedge.outputs"});
+  for (const std::string& end : keys_that(kRunEnd)) {
+    const std::string section = end.substr(0, end.find('.') + 1);
+    int counts = 0;
+    for (const std::string& count : keys_that(kOutputCount)) counts += count.starts_with(section);
+    EXPECT_EQ(counts, 1) << end;
+  }
+  EXPECT_TRUE(key_may("run.threads", kDisplay));
+  EXPECT_TRUE(key_may("wedge.mu_bp", kOnBranch));
+  EXPECT_FALSE(key_may("wedge.mu_bp", kDisplay));
+  EXPECT_FALSE(key_may("contact.kn", kOnBranch));
+  EXPECT_FALSE(key_may("no.such_key", kDisplay));
+}
+
 }  // namespace
 }  // namespace orogen

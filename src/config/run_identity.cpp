@@ -7,18 +7,23 @@
 #include <array>
 
 #include "config/config.hpp"
+#include "config/schema.hpp"
 #include "io/binary_archive.hpp"
 #include "io/snapshot_reader.hpp"
 
 namespace orogen {
 namespace {
 
-// Keys that change how fast or how visibly a run goes, never what it computes.
-constexpr std::array<std::string_view, 7> kKeysOutsideIdentity = {
-    "run.threads",     "run.adapt_threads",       "run.adapt_slice",    "output.progress",
-    "output.checkpoint_every", "output.vtp", "singly.speed_bound"};
-
-constexpr std::array<std::string_view, 2> kExtensionKeys = {"wedge.s_end", "wedge.outputs"};
+// The keys that extend a run (the schema's RunEnd and OutputCount keys), in schema order.
+const std::vector<std::string>& extension_keys() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const KeySpec& spec : schema())
+      if (spec.changes & (kRunEnd | kOutputCount)) k.push_back(spec.name);
+    return k;
+  }();
+  return keys;
+}
 
 }  // namespace
 
@@ -82,26 +87,22 @@ std::string config_differences(std::string_view here, std::string_view there, st
 // outside the identity, and free to differ between a checkpoint and config.toml.
 bool is_analysis_key(std::string_view key) { return key.starts_with("analysis."); }
 
-bool is_display_key(std::string_view key) {
-  return std::find(kKeysOutsideIdentity.begin(), kKeysOutsideIdentity.end(), key) != kKeysOutsideIdentity.end();
-}
+bool is_display_key(std::string_view key) { return key_may(key, kDisplay); }
 
-bool is_extension_key(std::string_view key) {
-  return std::find(kExtensionKeys.begin(), kExtensionKeys.end(), key) != kExtensionKeys.end();
-}
+bool is_extension_key(std::string_view key) { return key_may(key, kRunEnd) || key_may(key, kOutputCount); }
 
 std::string extension_changes(std::string_view now, std::string_view before) {
   const auto a = key_values(now), b = key_values(before);
   std::string out;
-  for (const auto key : kExtensionKeys) {
-    const auto ia = a.find(std::string(key)), ib = b.find(std::string(key));
+  for (const std::string& key : extension_keys()) {
+    const auto ia = a.find(key), ib = b.find(key);
     if (ia == a.end() || ib == b.end() || ia->second == ib->second) continue;
     out += fmt::format("{}{} {} -> {}", out.empty() ? "" : ", ", key, ib->second, ia->second);
   }
   return out.empty() ? "no key changed" : out;
 }
 
-std::string extension_keys_text() { return fmt::format("{}", fmt::join(kExtensionKeys, ", ")); }
+std::string extension_keys_text() { return fmt::format("{}", fmt::join(extension_keys(), ", ")); }
 
 std::string run_identity(const Config& config) { return run_identity_of_toml(config.to_toml()); }
 

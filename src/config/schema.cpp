@@ -1,9 +1,12 @@
 #include "config/schema.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <system_error>
+#include <utility>
 
 #include "contact/normal_laws.hpp"
 
@@ -34,6 +37,33 @@ KeySpec text(std::string name, std::string def, std::vector<std::string> choices
   return k;
 }
 
+// What each key may change in a run that exists (KeyChange, schema.hpp); a key not listed
+// changes what the run computes and is fixed for its life.
+std::vector<KeySpec> with_changes(std::vector<KeySpec> table) {
+  const std::pair<std::string_view, std::uint8_t> changes[] = {
+      {"run.threads", kDisplay | kOnBranch},
+      {"run.adapt_threads", kDisplay | kOnBranch},
+      {"run.adapt_slice", kDisplay | kOnBranch},
+      {"contact.mu", kOnBranch},
+      {"wedge.mu_bp", kOnBranch},
+      {"wedge.mu_br", kOnBranch},
+      {"wedge.s_end", kRunEnd | kOnBranch},
+      {"wedge.outputs", kOutputCount | kOnBranch},
+      {"wedge.erosion_height", kOnBranch},
+      {"wedge.erosion_every", kOnBranch},
+      {"singly.speed_bound", kDisplay},
+      {"output.checkpoint_every", kDisplay | kOnBranch},
+      {"output.vtp", kDisplay | kOnBranch},
+      {"output.progress", kDisplay | kOnBranch},
+  };
+  for (const auto& [name, flags] : changes) {
+    const auto it = std::find_if(table.begin(), table.end(), [&](const KeySpec& k) { return k.name == name; });
+    if (it == table.end()) throw std::logic_error("schema: no key " + std::string(name) + " to mark");
+    it->changes = flags;
+  }
+  return table;
+}
+
 // Bounds are written without a forced ".0": "> 0", "<= 1", ">= 0.14".
 std::string format_number(double x) {
   char buf[64];
@@ -54,7 +84,7 @@ std::string_view KeySpec::key() const {
 }
 
 const std::vector<KeySpec>& schema() {
-  static const std::vector<KeySpec> table = {
+  static const std::vector<KeySpec> table = with_changes({
       text("run.experiment", "wedge", {"packing", "wedge", "repose", "singly_vergent", "biaxial", "scripted"},
            "what the run does: settle a packing, grow a doubly-vergent wedge, an angle of repose "
            "experiment, a singly-vergent critical wedge, a biaxial test of bulk friction, or a scripted "
@@ -233,7 +263,7 @@ const std::vector<KeySpec>& schema() {
            "0 = none; else at least 0.5 [d]"),
       text("output.progress", "auto", {"auto", "always", "never"},
            "progress line: auto = only on a terminal"),
-  };
+  });
   return table;
 }
 
@@ -242,6 +272,18 @@ std::optional<std::size_t> find_key(std::string_view name) {
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s[i].name == name) return i;
   return std::nullopt;
+}
+
+bool key_may(std::string_view name, KeyChange change) {
+  const auto i = find_key(name);
+  return i && (schema()[*i].changes & change) != 0;
+}
+
+std::vector<std::string> keys_that(KeyChange change) {
+  std::vector<std::string> out;
+  for (const KeySpec& k : schema())
+    if (k.changes & change) out.push_back(k.name);
+  return out;
 }
 
 const std::vector<LaterKey>& later_keys() {

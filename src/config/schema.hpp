@@ -30,6 +30,14 @@ struct Bound {
   bool inclusive = true;
 };
 
+// What a key may change in a run that exists, declared with the key so that the run driver
+// names none (a new experiment declares its own): Display, only how fast or visibly it goes
+// (outside the run's identity, changed by any resume); RunEnd and OutputCount, the end of the
+// run and the number of outputs over it (a resume may move the end on, the outputs following
+// at the same spacing: wedge.s_end, wedge.outputs); OnBranch, a key that acts on the state
+// as it stands, so a branch (--from) may change it (friction, erosion).
+enum KeyChange : std::uint8_t { kChangesNothing = 0, kDisplay = 1, kRunEnd = 2, kOutputCount = 4, kOnBranch = 8 };
+
 struct KeySpec {
   std::string name;  // dotted "section.key"
   KeyType type = KeyType::Float;
@@ -37,6 +45,7 @@ struct KeySpec {
   std::optional<Bound> min, max;     // numeric keys only; either may be absent
   std::vector<std::string> choices;  // string keys only; empty = any string
   std::string doc;                   // one line, unit in brackets
+  std::uint8_t changes = kChangesNothing;  // KeyChange flags
 
   std::string_view section() const;  // "contact" of "contact.kn"
   std::string_view key() const;      // "kn" of "contact.kn"
@@ -59,6 +68,10 @@ struct LaterKey {
 };
 const std::vector<LaterKey>& later_keys();
 const LaterKey* find_later_key(std::string_view name);  // nullptr: not a later key
+
+// Whether the key carries the KeyChange flag; the keys that do, in schema order.
+bool key_may(std::string_view name, KeyChange change);
+std::vector<std::string> keys_that(KeyChange change);
 
 // Section names in schema order.
 std::vector<std::string> schema_sections();

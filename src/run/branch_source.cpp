@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 
+#include "config/schema.hpp"
 #include "io/binary_archive.hpp"
 #include "io/snapshot_reader.hpp"
 #include "run/run_folder.hpp"
@@ -15,28 +16,18 @@ namespace fs = std::filesystem;
 namespace orogen {
 namespace {
 
-// Keys a branch may change: they act on the state as it is (friction between discs and on the
-// bases, erosion, the end and spacing of outputs, speed and display). Every other key shaped
-// the stored state (packing, particles, wall positions, time step), so changing it would not
-// continue that state. Basal friction sits in the loaded walls: the experiment puts the
-// branch's values back (Experiment::adopt_branch_config).
-constexpr std::array<std::string_view, 13> kBranchKeys = {
-    "contact.mu",      "wedge.mu_bp",          "wedge.mu_br",         "wedge.erosion_height",
-    "wedge.erosion_every", "wedge.s_end",      "wedge.outputs",       "run.threads",
-    "run.adapt_threads",   "run.adapt_slice",  "output.progress",     "output.vtp",
-    "output.checkpoint_every"};
-
-bool is_branch_key(std::string_view key) {
-  return std::find(kBranchKeys.begin(), kBranchKeys.end(), key) != kBranchKeys.end();
-}
+// Keys a branch may change (the schema's OnBranch keys): they act on the state as it is
+// (friction between discs and on the bases, erosion, the end and spacing of outputs, speed and
+// display). Every other key shaped the stored state (packing, particles, wall positions, time
+// step), so changing it would not continue that state. Basal friction sits in the loaded
+// walls: the experiment puts the branch's values back (Experiment::adopt_branch_config).
+bool is_branch_key(std::string_view key) { return key_may(key, kOnBranch); }
 
 }  // namespace
 
 std::string BranchSource::text() const { return fmt::format("{}:{}", dir.string(), output); }
 
-std::string branch_keys_text() {
-  return fmt::format("{}", fmt::join(kBranchKeys, ", "));
-}
+std::string branch_keys_text() { return fmt::format("{}", fmt::join(keys_that(kOnBranch), ", ")); }
 
 BranchSource find_branch_source(const std::string& from) {
   BranchSource s;

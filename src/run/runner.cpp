@@ -48,6 +48,15 @@ struct UsageError : BadInput {
   using BadInput::BadInput;
 };
 
+// The key that counts the outputs over a run whose end is `end_key` (the schema's OutputCount
+// key of the same section: wedge.outputs for wedge.s_end).
+std::string output_count_key(const std::string& end_key) {
+  const std::string section = end_key.substr(0, end_key.find('.') + 1);
+  for (const std::string& key : keys_that(kOutputCount))
+    if (key.starts_with(section)) return key;
+  throw std::logic_error("schema: no output count beside " + end_key);
+}
+
 // Everything the driver itself must carry across a checkpoint.
 struct RunState {
   std::int64_t outputs = 0;          // output steps written
@@ -123,10 +132,12 @@ class Run {
     const ArchiveReader in(dir_ / "checkpoint.bin");
     check_checkpoint_belongs(in);
     state_.finished = in.get_scalar<std::uint8_t>("run.finished") != 0;
-    if (state_.finished && !extending)
+    if (state_.finished && !extending) {
+      const std::string end_key = keys_that(kRunEnd).front();  // the schema's end of an extendable run
       throw UsageError(fmt::format("the run in {} has already finished; to extend it, give it a later end: orogen run "
-                                   "--resume {} --set wedge.s_end=... (wedge.outputs follows, at the same spacing)",
-                                   dir_.string(), dir_.string()));
+                                   "--resume {} --set {}=... ({} follows, at the same spacing)",
+                                   dir_.string(), dir_.string(), end_key, output_count_key(end_key)));
+    }
     state_.finished = false;
     load_world(in, world_);
     exp_->load(in);
@@ -547,30 +558,34 @@ void release_new_run(const RunOptions& opt, RunFolderLock& lock) {
 
 std::string override_key(const std::string& assignment) { return assignment.substr(0, assignment.find('=')); }
 
-// A resume's new wedge.s_end against the run's: never earlier (the outputs already written
-// would lie past the end). Without a new wedge.outputs (`keep_spacing`), it must be a whole
-// number of the run's output spacings; returns the "wedge.outputs=N" that keeps it.
-std::string check_new_end(const fs::path& dir, const std::vector<std::string>& extending, bool keep_spacing) {
+// A resume's new end (`end_key`, a RunEnd key: wedge.s_end) against the run's: never earlier
+// (the outputs already written would lie past the end). Without a new output count
+// (`keep_spacing`), it must be a whole number of the run's output spacings; returns the
+// "wedge.outputs=N" that keeps it.
+std::string check_new_end(const fs::path& dir, const std::string& end_key, const std::vector<std::string>& extending,
+                          bool keep_spacing) {
+  const std::string count_key = output_count_key(end_key);
   const Config before = Config::load(dir / "config.toml", {});
   const Config after = Config::load(dir / "config.toml", extending);
-  const double old_end = before.get_float("wedge.s_end"), new_end = after.get_float("wedge.s_end");
+  const double old_end = before.get_float(end_key), new_end = after.get_float(end_key);
   if (new_end < old_end)
-    throw UsageError(fmt::format("--resume {}: wedge.s_end = {:g} is before the run's end, {:g}; a resume may only move "
+    throw UsageError(fmt::format("--resume {}: {} = {:g} is before the run's end, {:g}; a resume may only move "
                                  "the end later (start a new run, or a branch with --from, for a shorter one)",
-                                 dir.string(), new_end, old_end));
-  const double spacing = old_end / static_cast<double>(before.get_int("wedge.outputs"));
+                                 dir.string(), end_key, new_end, old_end));
+  const double spacing = old_end / static_cast<double>(before.get_int(count_key));
   const double outputs = new_end / spacing;
   const double whole = std::max(1.0, std::round(outputs));
   if (keep_spacing && std::abs(outputs - whole) > 1e-6 * whole)
-    throw UsageError(fmt::format("--resume {}: a new wedge.s_end alone keeps the run's output spacing (S = {:.6g}, "
-                                 "wedge.s_end / wedge.outputs), and {:g} is not a whole number of it: give an end that "
-                                 "is ({:.6g} gives {:.0f} outputs), or set wedge.outputs too",
-                                 dir.string(), spacing, new_end, whole * spacing, whole));
-  return fmt::format("wedge.outputs={:.0f}", whole);
+    throw UsageError(fmt::format("--resume {}: a new {} alone keeps the run's output spacing (S = {:.6g}, "
+                                 "{} / {}), and {:g} is not a whole number of it: give an end that "
+                                 "is ({:.6g} gives {:.0f} outputs), or set {} too",
+                                 dir.string(), end_key, spacing, end_key, count_key, new_end, whole * spacing, whole,
+                                 count_key));
+  return fmt::format("{}={:.0f}", count_key, whole);
 }
 
-// A resume's --set overrides: those that extend the run (extension keys; a new wedge.s_end
-// is never earlier, and alone it keeps the outputs' spacing, so wedge.outputs follows it),
+// A resume's --set overrides: those that extend the run (extension keys; a new end is never
+// earlier, and alone it keeps the outputs' spacing, so the output count follows it),
 // and those that change only how this process goes (display keys). Any other key is refused.
 struct ResumeOverrides {
   std::vector<std::string> extending, display;
@@ -579,13 +594,14 @@ struct ResumeOverrides {
 ResumeOverrides resume_overrides(const RunOptions& opt) {
   if (opt.config) throw UsageError("--resume takes its configuration from the run folder; drop CONFIG");
   ResumeOverrides r;
-  bool sets_end = false, sets_outputs = false;
+  std::string end_key;  // the run's end, when the resume moves it
+  bool sets_outputs = false;
   for (const auto& o : opt.overrides) {
     const std::string key = override_key(o);
     if (is_extension_key(key)) {
       r.extending.push_back(o);
-      sets_end |= key == "wedge.s_end";
-      sets_outputs |= key == "wedge.outputs";
+      if (key_may(key, kRunEnd)) end_key = key;
+      sets_outputs |= key_may(key, kOutputCount);
     } else if (is_display_key(key)) {
       r.display.push_back(o);
     } else {
@@ -598,8 +614,8 @@ ResumeOverrides resume_overrides(const RunOptions& opt) {
   if (!fs::is_directory(opt.out)) throw UsageError(fmt::format("--resume {}: no such folder", opt.out.string()));
   if (!fs::exists(opt.out / "config.toml"))
     throw UsageError(fmt::format("--resume {}: no run there (config.toml is missing)", opt.out.string()));
-  if (sets_end) {
-    const std::string outputs = check_new_end(opt.out, r.extending, !sets_outputs);
+  if (!end_key.empty()) {
+    const std::string outputs = check_new_end(opt.out, end_key, r.extending, !sets_outputs);
     if (!sets_outputs) r.extending.push_back(outputs);
   }
   return r;
