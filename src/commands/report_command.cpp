@@ -35,13 +35,9 @@ int report_command(const ReportOptions& options) {
     std::cerr << "error: " << error << "\n";
     return 2;
   }
-  if (const std::string why = python_module_unavailable("orogen.atlas"); !why.empty()) {
-    std::cerr << "error: the atlas needs " << why << "\n";
-    return 1;
-  }
   std::vector<std::string> args = {options.dir.string()};
   if (!options.out.empty()) args.insert(args.end(), {"--out", options.out.string()});
-  return run_python_module("orogen.atlas", args);
+  return run_package_command("orogen.atlas", "the atlas", args);
 }
 
 }  // namespace orogen

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <filesystem>
+#include <iostream>
 
 namespace orogen {
 
@@ -59,6 +60,14 @@ int run_python_module(const std::string& module, const std::vector<std::string>&
   std::vector<std::string> argv = {kPython, "-m", module};
   argv.insert(argv.end(), args.begin(), args.end());
   return run_python(argv, stdout_to_stderr, false);
+}
+
+int run_package_command(const std::string& module, const std::string& what, const std::vector<std::string>& args) {
+  if (const std::string why = python_module_unavailable(module); !why.empty()) {
+    std::cerr << "error: " << what << " needs " << why << "\n";
+    return 1;
+  }
+  return run_python_module(module, args);
 }
 
 }  // namespace orogen

@@ -20,4 +20,8 @@ std::string python_module_unavailable(const std::string& module);
 // died by signal N, 127 when it could not be started.
 int run_python_module(const std::string& module, const std::vector<std::string>& args, bool stdout_to_stderr = false);
 
+// A command that is a module of the package (`orogen charts`, `orogen report`): runs it with
+// ARGS, its exit status ours; where it cannot run, "error: WHAT needs ..." and exit 1.
+int run_package_command(const std::string& module, const std::string& what, const std::vector<std::string>& args);
+
 }  // namespace orogen
