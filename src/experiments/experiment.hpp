@@ -3,7 +3,9 @@
 // measurements around World::advance(). The run driver (run/runner) owns outputs,
 // checkpoints and progress; an experiment only says what to simulate and what to measure.
 #include <array>
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <memory>
@@ -29,6 +31,10 @@ struct SummaryValue {
   double value;
 };
 
+// Work a run does beside its outputs (the exhumation analysis with analysis.in_run): called
+// after each output with the number written so far, and once more when the run has finished.
+using OutputObserver = std::function<void(std::int64_t outputs, bool finished)>;
+
 class Experiment {
  public:
   virtual ~Experiment() = default;
@@ -48,6 +54,8 @@ class Experiment {
   virtual std::vector<std::pair<std::string, double>> scalars(const World&) const { return {}; }
   // Called after each output step is written (e.g. to remember positions for the next one).
   virtual void after_output(const World&) {}
+  // What the run driver calls beside the outputs of a run in `run_dir` (none by default).
+  virtual std::vector<OutputObserver> output_observers(const std::filesystem::path& /*run_dir*/) const { return {}; }
   // Model time between output steps, if the experiment sets it (else output.interval).
   virtual std::optional<double> output_interval() const { return std::nullopt; }
   // Pictures shade material that started at x0 < x_split apart (NaN: no split).

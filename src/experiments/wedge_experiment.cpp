@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "analysis/wedge_geometry.hpp"
+#include "exhumation/in_run_analysis.hpp"
 #include "experiments/series_table.hpp"
 #include "experiments/settled_layer.hpp"
 
@@ -279,6 +280,11 @@ void WedgeExperiment::after_output(const World& w) {
   displacements_.remember(w);
   const WedgeSample m = sample(w);
   history_.record({m.S, m.H, m.Dp, m.Mp, m.Dr, m.Mr, m.T, m.alpha, m.beta});
+}
+
+std::vector<OutputObserver> WedgeExperiment::output_observers(const std::filesystem::path& run_dir) const {
+  if (!spec_.analysis_in_run) return {};
+  return {in_run_analysis(run_dir, spec_.analysis_every)};
 }
 
 std::vector<SummaryValue> WedgeExperiment::summary(const World&) const { return history_.summary(0.25 * spec_.s_end); }

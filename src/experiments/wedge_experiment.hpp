@@ -39,6 +39,8 @@ struct WedgeSpec {
   int erosion_every = 50;      // steps between erosion passes
   double marker_height = 1.5;  // marker fronts at this multiple of h0
   double column_width_factor = 2.3;
+  bool analysis_in_run = false;    // the exhumation analysis during the run (analysis.in_run)
+  std::int64_t analysis_every = 1;  // after every this many outputs and at the end (analysis.every)
   std::string packing_file;    // settled tile from a packing run; empty: settle one first
   PackingSpec packing;         // for settling the tile
   SettleSpec settle;
@@ -63,6 +65,7 @@ class WedgeExperiment final : public Experiment {
   std::vector<SnapshotField> fields(const World& world) const override;
   std::vector<std::pair<std::string, double>> scalars(const World& world) const override;
   void after_output(const World& world) override;
+  std::vector<OutputObserver> output_observers(const std::filesystem::path& run_dir) const override;
   std::vector<SummaryValue> summary(const World& world) const override;
   void save(ArchiveWriter& out) const override;
   void load(const ArchiveReader& in) override;

@@ -67,6 +67,8 @@ std::unique_ptr<Experiment> make_wedge_experiment(const Config& c) {
   w.tile_length = c.get_float("wedge.tile_length");
   w.erosion_height = c.get_float("wedge.erosion_height");
   w.erosion_every = c.get_int32("wedge.erosion_every");
+  w.analysis_in_run = c.get_bool("analysis.in_run");
+  w.analysis_every = c.get_int("analysis.every");
   w.marker_height = c.get_float("wedge.marker_height");
   w.packing_file = c.get_string("wedge.packing_file");
   read_layer_keys(c, w);

@@ -117,10 +117,6 @@ class Run {
   // the in-run analysis when due.
   void output();
 
-  // The same incremental analysis as `orogen analyze DIR` afterwards: it reads only the
-  // outputs it has not seen. A failure is logged and the run goes on (it can be re-run later).
-  void analyze();
-
   // summary.csv: the series format with a single row, one column per result.
   void write_summary();
 
@@ -149,8 +145,7 @@ class Run {
   bool write_vtp_;
   ContactOutputOptions contact_output_;
   std::string identity_;
-  bool analyze_in_run_;
-  std::int64_t analyze_every_;
+  std::vector<OutputObserver> observers_;  // the experiment's work beside the outputs
   std::string checkpoint_config_;  // the configuration the loaded checkpoint was written with
   std::uint64_t last_output_step_ = 0;
   std::int64_t abort_after_outputs_ = 0;

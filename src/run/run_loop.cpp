@@ -66,7 +66,7 @@ int Run::loop(Progress& progress) {
   if (state_.output_times.empty() || world_.step != last_output_step_) output();
   exp_->finish(world_, dir_);
   write_summary();
-  if (analyze_in_run_) analyze();  // the outputs since the last analysis.every
+  for (const auto& observer : observers_) observer(state_.outputs, true);  // e.g. the outputs since the last analysis.every
   state_.finished = true;
   checkpoint();
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

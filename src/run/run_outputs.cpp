@@ -4,7 +4,6 @@
 
 #include <cstdlib>
 
-#include "exhumation/analyze_command.hpp"
 #include "io/vtp_writer.hpp"
 #include "run/kept_files.hpp"
 #include "run/removal_log.hpp"
@@ -65,19 +64,9 @@ void Run::output() {
   if (!branch_start_) exp_->after_output(world_);  // a branch's state has seen its output already
   branch_start_ = false;
   if (write_vtp_) write_pvd_file();
-  if (analyze_in_run_ && state_.outputs % analyze_every_ == 0) analyze();
+  for (const auto& observer : observers_) observer(state_.outputs, false);
   // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
   if (state_.outputs == abort_after_outputs_) std::_Exit(137);
-}
-
-// The same incremental analysis as `orogen analyze DIR` afterwards: it reads only the
-// outputs it has not seen. A failure is logged and the run goes on (it can be re-run later).
-void Run::analyze() {
-  AnalyzeOptions analysis;
-  analysis.dir = dir_;
-  analysis.quiet = true;
-  if (analyze_command(analysis) != 0)
-    if (auto log = spdlog::get("orogen")) log->warn("in-run analysis failed (see the error above); the run goes on");
 }
 
 // summary.csv: the series format with a single row, one column per result.

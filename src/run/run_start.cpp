@@ -44,8 +44,7 @@ Run::Run(const Config& config, fs::path dir, std::unique_ptr<Experiment> experim
       interval_(exp_->output_interval().value_or(config.get_float("output.interval"))),
       checkpoint_every_(settings_.get_int("output.checkpoint_every")),
       write_vtp_(settings_.get_bool("output.vtp")), contact_output_(contact_output_options(config)),
-      identity_(run_identity(config)), analyze_in_run_(config.get_bool("analysis.in_run")),
-      analyze_every_(config.get_int("analysis.every")) {}
+      identity_(run_identity(config)), observers_(exp_->output_observers(dir_)) {}
 
 // Builds the initial state and writes nothing, so that errors found here (time.dt above the
 // stability limit) leave no files behind.
