@@ -7,6 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 orogen=build/release/orogen
+export PYTHONPATH="$PWD/python${PYTHONPATH:+:$PYTHONPATH}"  # this tree's package (orogen charts, report)
 run="" n=100 work=$(mktemp -d /tmp/atlas_bench.XXXXXX)
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -24,7 +25,7 @@ if [ -z "$run" ]; then  # a small wedge with the output count of a real run, and
     --set output.progress=never 2>/dev/null
   $orogen render "$run" --width 800 >/dev/null
   $orogen render "$run" --width 800 --color field:max_rel_disp --frames-dir frames_faults >/dev/null
-  python3 -m orogen.charts.wedge "$run" --out "$run/charts" >/dev/null
+  $orogen charts "$run" >/dev/null
 fi
 mkdir -p "$work/runs"
 for i in $(seq -w 1 "$n"); do
