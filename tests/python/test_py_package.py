@@ -5,6 +5,7 @@ the commands that run it say how to install it where it is missing."""
 import os
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 from conftest import BINARY, REPO
@@ -49,3 +50,30 @@ def test_a_command_without_the_package_says_how_to_install_it(tmp_path):
     r = subprocess.run([BINARY, "charts", str(tmp_path)], capture_output=True, text=True, env=env)
     assert r.returncode == 1, r.stderr
     assert "orogen.charts" in r.stderr and "scripts/install-python.sh" in r.stderr
+
+
+def test_charts_of_a_folder_are_picked_by_what_it_holds(tmp_path):
+    """`python3 -m orogen.charts DIR` (what `orogen charts` runs): an ensemble gets the ensemble
+    charts, a biaxial run the granular ones; a folder of neither is refused with exit 2."""
+    sys.path.insert(0, str(REPO / "tests" / "python"))
+    import ensemble_fixture
+    import test_granular_charts as granular_fixtures
+
+    ensemble = tmp_path / "ensemble"
+    ensemble_fixture.make_ensemble(str(ensemble))
+    stats = subprocess.run(["/usr/bin/python3", "-m", "orogen.stats", str(ensemble)], capture_output=True, text=True)
+    assert stats.returncode == 0, stats.stderr
+    charts = subprocess.run(["/usr/bin/python3", "-m", "orogen.charts", str(ensemble)], capture_output=True, text=True)
+    assert charts.returncode == 0, charts.stderr
+    assert (ensemble / "aggregate" / "charts" / "fig5_16_mean_fronts.png").is_file()
+
+    biaxial = tmp_path / "biaxial"
+    granular_fixtures.make_biaxial_run(str(biaxial), "random_clusters", 0.3, 35.0, 25.0)
+    charts = subprocess.run(["/usr/bin/python3", "-m", "orogen.charts", str(biaxial)], capture_output=True, text=True)
+    assert charts.returncode == 0, charts.stderr
+    assert (biaxial / "charts" / "biaxial_stress_strain.png").is_file()
+
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    refused = subprocess.run(["/usr/bin/python3", "-m", "orogen.charts", str(empty)], capture_output=True, text=True)
+    assert refused.returncode == 2 and "holds no wedge" in refused.stderr
