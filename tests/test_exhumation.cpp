@@ -94,8 +94,8 @@ TEST(ExhumationTracker, DepthsBelowTheLocalSurfaceAndSurfaceValues) {
   EXPECT_FLOAT_EQ(r.particle_depth[2], 0.3f);
   EXPECT_FLOAT_EQ(r.particle_depth[3], 0.2f);
   // Disc 2 is deeper than 0.5: reset; the others are un-reset.
-  EXPECT_EQ(tr.particles_.at(2).ages.dips(0), 1u);
-  EXPECT_TRUE(tr.particles_.at(1).ages.unreset(0));
+  EXPECT_EQ(tr.ages_of(2)->dips(0), 1u);
+  EXPECT_TRUE(tr.ages_of(1)->unreset(0));
   EXPECT_EQ(r.surface_unreset[0], 1);
 }
 
@@ -122,7 +122,7 @@ TEST(ExhumationTracker, ErodedParticleLeavesTheColumnAtItsStepWithItsValues) {
   EXPECT_DOUBLE_EQ(e.depth, 0.25);
   EXPECT_DOUBLE_EQ(e.age[0], 10);  // un-reset, seen from t = 0 to t = 10
   EXPECT_EQ(e.unreset[0], 1);
-  EXPECT_FALSE(tr.particles_.contains(1));
+  EXPECT_EQ(tr.ages_of(1), nullptr);
   // Disc 2 was 1.0 deep at output 1 (reset there) and is now the surface: age 20 - 10.
   EXPECT_DOUBLE_EQ(r2.surface_age[0], 10);
   EXPECT_DOUBLE_EQ(r2.top_max_depth[0], 1.0);

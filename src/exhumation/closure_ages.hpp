@@ -3,10 +3,15 @@
 // the particle was last seen deeper than h_i. While deeper the age is 0; a particle never seen
 // deeper is "un-reset" and ages from its first output. Each dip below h_i resets the clock.
 #include <cstdint>
+#include <filesystem>
 #include <span>
 #include <vector>
 
 namespace orogen {
+
+struct AnalysisState;
+void save_analysis_state(const std::filesystem::path& path, const AnalysisState& state);
+AnalysisState load_analysis_state(const std::filesystem::path& path);
 
 class ClosureAges {
  public:
@@ -24,7 +29,12 @@ class ClosureAges {
   std::uint32_t dips(std::size_t i) const { return dips_[i]; }  // times it went below h_i
   std::size_t n_depths() const { return last_deep_.size(); }
 
-  // Raw state for the incremental analysis file.
+
+ private:
+  // The state file of the incremental analysis writes and reads this state (analysis_state.cpp).
+  friend void save_analysis_state(const std::filesystem::path& path, const AnalysisState& state);
+  friend AnalysisState load_analysis_state(const std::filesystem::path& path);
+
   double first_time_ = 0, time_ = 0, depth_ = 0, max_depth_ = 0;
   bool seen_ = false;
   std::vector<double> last_deep_;

@@ -76,20 +76,28 @@ class ExhumationTracker {
   std::int64_t outputs_seen() const { return outputs_; }
   std::int64_t last_step() const { return last_step_; }
   const std::vector<ErodedParticle>& eroded() const { return eroded_; }
+  // The closure-depth ages of a disc still in the model, or nullptr for one never seen or gone.
+  const ClosureAges* ages_of(std::int64_t id) const {
+    const auto it = particles_.find(id);
+    return it == particles_.end() ? nullptr : &it->second.ages;
+  }
 
-  // State for the incremental analysis (analysis_state.cpp).
   struct Particle {
     ClosureAges ages;
     double radius = 0;
     std::int64_t last_output = -1;
   };
+
+ private:
+  // The state file of the incremental analysis writes and reads this state (analysis_state.cpp).
+  friend void save_analysis_state(const std::filesystem::path& path, const AnalysisState& state);
+  friend AnalysisState load_analysis_state(const std::filesystem::path& path);
+
   std::unordered_map<std::int64_t, Particle> particles_;
   std::vector<double> prev_surface_age_, cum_area_, jump_total_;
   std::vector<std::int64_t> cum_count_, jump_count_;
   std::vector<ErodedParticle> eroded_;
   std::int64_t outputs_ = 0, last_step_ = -1;
-
- private:
   ExhumationParams p_;
   void record_erosion(std::span<const ErosionEvent> eroded, OutputRecord& r);
 };
