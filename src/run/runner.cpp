@@ -195,6 +195,79 @@ ResumeOverrides resume_overrides(const RunOptions& opt) {
   return r;
 }
 
+// This process's configuration: a resume's stored one with its own --set of extension and
+// display keys; a branch's (without a file, its source's) with --set, checked against the
+// source; else the file's (or the defaults) with --set.
+Config run_configuration(const RunOptions& opt, const ResumeOverrides& resume,
+                         const std::optional<BranchSource>& source) {
+  if (opt.resume) {
+    std::vector<std::string> all = resume.extending;
+    all.insert(all.end(), resume.display.begin(), resume.display.end());
+    return Config::load(opt.out / "config.toml", all);
+  }
+  // A branch without a configuration file continues its source's configuration (with --set).
+  const std::optional<fs::path> config_file = opt.config || !source ? opt.config : source->dir / "config.toml";
+  Config config = Config::load(config_file, opt.overrides);
+  if (source) check_branch_config(config, *source);
+  return config;
+}
+
+// A run that does not start from a checkpoint: its set-up (or a branch's source state), on
+// the terminal and in the log. Returns the exit code when the set-up ends the command (a stop
+// by a signal, an instability); a new run's folder is released where it cannot be resumed.
+std::optional<int> build_first_state(Run& run, const RunOptions& opt, const std::optional<BranchSource>& source,
+                                     spdlog::logger& logger, StatusLineSink& console, Progress& progress,
+                                     RunFolderLock& lock) {
+  try {
+    const SetupReport report(logger, console, progress, source.has_value());
+    if (source) {
+      build_branch(run, *source, opt.out);
+    } else {
+      run.setup();
+      if (opt.before_first_output) run.build_on_setup(opt.before_first_output);
+      else if (run.world().discs.size() == 0)
+        throw UsageError("the set-up made no discs, so the run could only run empty; make the layer larger "
+                         "(layer.length, layer.thickness)");
+    }
+  } catch (const run_control::Stopped& stop) {
+    // A new run keeps its config.toml, as after a kill during the set-up: --resume starts it
+    // again. A branch cannot be resumed before its first checkpoint: its folder goes.
+    const bool keep = !source;
+    logger.info("stopped by {} during the set-up, before output 0{}", signal_name(stop.signal),
+                keep ? fmt::format("; orogen run --resume {} starts it again", opt.out.string())
+                     : "; the branch's folder is removed");
+    if (!keep) release_new_run(opt, lock);
+    return 128 + stop.signal;
+  } catch (const InstabilityError& e) {
+    if (!opt.resume) release_new_run(opt, lock);
+    std::cerr << "error: the set-up became unstable: " << e.what() << "\n";
+    return 3;
+  } catch (...) {
+    if (!opt.resume) release_new_run(opt, lock);
+    throw;
+  }
+  return std::nullopt;
+}
+
+// Opens the outputs: after a checkpoint they continue (an extension first rewrites
+// config.toml with the new end), else output 0 and a checkpoint are written at once.
+void open_outputs(Run& run, const RunOptions& opt, bool from_checkpoint, const Config& stored,
+                  const std::vector<std::string>& extending, spdlog::logger& logger) {
+  if (!from_checkpoint) {
+    if (opt.resume) logger.info("no checkpoint yet (the run was stopped during its set-up): starting it again");
+    run.start_fresh();
+    return;
+  }
+  if (!extending.empty()) {
+    const std::string before = run.checkpoint_config();
+    const std::string header =
+        run.branch_from().empty() ? "" : fmt::format("{}{} (orogen run --from)\n", kBranchHeader, run.branch_from());
+    write_file_atomically(opt.out / "config.toml", header + stored.to_toml());
+    logger.info("extended: {}", extension_changes(stored.to_toml(), before));
+  }
+  run.reopen_outputs();
+}
+
 }  // namespace
 
 int run_command(const RunOptions& opt) {
@@ -204,15 +277,9 @@ int run_command(const RunOptions& opt) {
     if (opt.out.empty()) throw UsageError("--out needs a folder (got an empty one)");
     if (opt.resume && !opt.from.empty()) throw UsageError("--from starts a new run (a branch); drop --resume");
     const ResumeOverrides resume = opt.resume ? resume_overrides(opt) : ResumeOverrides{};
-    std::vector<std::string> resume_all = resume.extending;
-    resume_all.insert(resume_all.end(), resume.display.begin(), resume.display.end());
     std::optional<BranchSource> source;
     if (!opt.from.empty()) source = find_branch_source(opt.from);
-    // A branch without a configuration file continues its source's configuration (with --set).
-    const std::optional<fs::path> config_file = opt.config || !source ? opt.config : source->dir / "config.toml";
-    const Config config =
-        opt.resume ? Config::load(opt.out / "config.toml", resume_all) : Config::load(config_file, opt.overrides);
-    if (source) check_branch_config(config, *source);
+    const Config config = run_configuration(opt, resume, source);
     if (!opt.resume && fs::exists(opt.out / "config.toml"))
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
@@ -264,54 +331,14 @@ int run_command(const RunOptions& opt) {
     for (const auto& warning : config_warnings(config)) logger->warn("{}", warning);
     if (stale > 0) logger->info("removed {} temporary file(s) left by a killed write", stale);
     Progress progress(progress_mode(config), console);
-    if (!from_checkpoint) {
-      try {
-        const SetupReport report(*logger, *console, progress, source.has_value());
-        if (source) {
-          build_branch(run, *source, opt.out);
-        } else {
-          run.setup();
-          if (opt.before_first_output) run.build_on_setup(opt.before_first_output);
-          else if (run.world().discs.size() == 0)
-            throw UsageError("the set-up made no discs, so the run could only run empty; make the layer larger "
-                             "(layer.length, layer.thickness)");
-        }
-      } catch (const run_control::Stopped& stop) {
-        // A new run keeps its config.toml, as after a kill during the set-up: --resume starts it
-        // again. A branch cannot be resumed before its first checkpoint: its folder goes.
-        const bool keep = !source;
-        logger->info("stopped by {} during the set-up, before output 0{}", signal_name(stop.signal),
-                     keep ? fmt::format("; orogen run --resume {} starts it again", opt.out.string())
-                          : "; the branch's folder is removed");
-        if (!keep) release_new_run(opt, lock);
-        return 128 + stop.signal;
-      } catch (const InstabilityError& e) {
-        if (!opt.resume) release_new_run(opt, lock);
-        std::cerr << "error: the set-up became unstable: " << e.what() << "\n";
-        return 3;
-      } catch (...) {
-        if (!opt.resume) release_new_run(opt, lock);
-        throw;
-      }
-    }
+    if (!from_checkpoint)
+      if (const auto code = build_first_state(run, opt, source, *logger, *console, progress, lock)) return *code;
     if (source)
       logger->info("branch of {} at output {} (step {}, t = {:.6g}), its state {}", source->dir.string(), source->output,
                    run.world().step, run.world().time,
                    source->at_checkpoint ? "from its checkpoint" : "rebuilt by replaying it from its set-up");
 
-    if (from_checkpoint) {
-      if (!extending.empty()) {
-        const std::string before = run.checkpoint_config();
-        const std::string header =
-            run.branch_from().empty() ? "" : fmt::format("{}{} (orogen run --from)\n", kBranchHeader, run.branch_from());
-        write_file_atomically(opt.out / "config.toml", header + stored.to_toml());
-        logger->info("extended: {}", extension_changes(stored.to_toml(), before));
-      }
-      run.reopen_outputs();
-    } else {
-      if (opt.resume) logger->info("no checkpoint yet (the run was stopped during its set-up): starting it again");
-      run.start_fresh();
-    }
+    open_outputs(run, opt, from_checkpoint, stored, extending, *logger);
     started = true;
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
                  run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
