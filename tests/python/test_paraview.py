@@ -181,3 +181,37 @@ class ParaViewOpensARun(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ParaViewViewScript(unittest.TestCase):
+    """scripts/paraview_view.py (issue 36): a run opened for looking at, 2D, fitted to the discs
+    (not to the clipped walls), the discs to scale and coloured over a robust range."""
+
+    def test_the_view_is_fitted_to_the_discs(self):
+        command, why = paraview_command()
+        if command is None:
+            self.skipTest(why)
+        tmp = tempfile.mkdtemp(prefix="orogen_paraview_view_")
+        try:
+            run_dir = os.path.join(tmp, "wedge")
+            subprocess.run([BINARY, "run", "--out", run_dir] + WEDGE, check=True, capture_output=True)
+            png = os.path.join(tmp, "view.png")
+            script = os.path.join(REPO, "scripts", "paraview_view.py")
+            for attempt in range(3):  # as run_paraview: an X server beside other jobs may refuse a window
+                done = subprocess.run(with_display_number(command, attempt) + [script, run_dir, "--png", png,
+                                                                              "--width", "800"],
+                                      capture_output=True, text=True, timeout=300)
+                if os.path.exists(png) or done.returncode not in (134, 139, -6, -11):
+                    break
+            self.assertTrue(os.path.exists(png), done.stdout[-2000:] + done.stderr[-2000:])
+            image = matplotlib.image.imread(png)[..., :3]
+            drawn = (abs(image - image[-1, -1]).sum(axis=2) > 0.08)  # anything but the background
+            columns = drawn.any(axis=0).nonzero()[0]
+            self.assertEqual(image.shape[1], 800)
+            self.assertGreater((columns[-1] - columns[0]) / image.shape[1], 0.9)  # the discs span the width
+            self.assertGreater(drawn.mean(), 0.15)
+            # The horizons: many colours, not one (a range set by outliers paints nearly all alike).
+            colours = {tuple((c * 8).astype(int)) for c in image[drawn]}
+            self.assertGreater(len(colours), 20)
+        finally:
+            shutil.rmtree(tmp, ignore_errors=True)
