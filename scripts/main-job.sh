@@ -11,8 +11,8 @@ cmake --build --preset release
 scripts/install-python.sh   # the Python package orogen: charts, statistics, atlas (docs/python.md)
 rm -rf runs/main
 build/release/orogen run --out runs/main
-build/release/orogen render runs/main
-build/release/orogen render runs/main --color field:max_rel_disp --frames-dir frames_faults ||
-  echo "(fault colouring skipped)"
+# Cross-sections: horizon and fault frames with their animations, PNG and PDF stills of the
+# last output (python3 -m orogen.charts.sections; docs/rendering.md).
+build/release/orogen sections runs/main
 build/release/orogen charts runs/main   # python3 -m orogen.charts.wedge runs/main --out runs/main/charts
-echo "main job done: runs/main (series.csv, snapshots.h5, run.pvd, frames/, animation.mp4, animation.gif, charts/)"
+echo "main job done: runs/main (series.csv, snapshots.h5, run.pvd, frames/, frames_faults/, animation*.mp4/.gif, sections/, charts/)"

@@ -270,7 +270,16 @@ TEST_F(IoSnapshot, EveryDatasetHasUnitsAndADescriptionAndTheConfigTravels) {
     EXPECT_FALSE(h5::get_dataset_attr_string(f.id(), name, "description").empty());
     ++datasets;
   }
-  EXPECT_EQ(datasets, kSnapshotDiscArrays.size() + 2);  // + max_rel_disp and walls
+  EXPECT_EQ(datasets, kSnapshotDiscArrays.size() + 3);  // + max_rel_disp, walls and the view xy
+  // xy is x and y as rows, read through the view (no copy).
+  const h5::Matrix xy = h5::read_2d(f.id(), "xy");
+  const auto x = h5::read<double>(f.id(), "x"), y = h5::read<double>(f.id(), "y");
+  ASSERT_EQ(xy.rows, d.size());
+  ASSERT_EQ(xy.cols, 2u);
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    EXPECT_EQ(xy.data[2 * i], x[i]);
+    EXPECT_EQ(xy.data[2 * i + 1], y[i]);
+  }
   EXPECT_EQ(h5::get_dataset_attr_string(f.id(), "max_rel_disp", "units"), "d");
   EXPECT_EQ(h5::get_dataset_attr_string(f.id(), "vx", "units"), "sqrt(g d)");
   f.close();
@@ -359,7 +368,9 @@ TEST_F(IoSnapshot, ReopenKeepsTheCheckpointsOutputsAndDropsWhatAKillLeft) {
   {
     h5::File f = h5::File::open(p, h5::File::Mode::ReadOnly);
     EXPECT_EQ(h5::get_attr_int64(f.id(), "n_outputs"), 2);
-    EXPECT_EQ(h5::list(f.id()), (std::vector<std::string>{"output_000000", "output_000001"}));
+    // The links, and the sidecar's vertex cells for the largest kept output.
+    EXPECT_EQ(h5::list(f.id()), (std::vector<std::string>{"disc_index", "output_000000", "output_000001"}));
+    EXPECT_EQ(h5::read<std::int32_t>(f.id(), "disc_index").size(), d.size());
   }
   w.append(make_frame(d, 777));
   SnapshotReader r(p);

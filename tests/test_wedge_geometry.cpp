@@ -178,5 +178,46 @@ TEST(WedgeGeometry, FittedSlopeOfALinearSurfaceIsExact) {
   EXPECT_EQ(fitted_slope(s, 50.0, 60.0), 0.0);
 }
 
+// wedge.fronts = surface (issue 36): one disc rolling ahead on the foreland sets the thesis's
+// front but not the raised surface's; a raised stretch of h0/2 or more does, wherever it is.
+TEST(WedgeGeometry, TheSurfaceFrontIgnoresALooseDiscButNotAStretchOfRaisedSurface) {
+  Discs d = wedge_discs();
+  std::int64_t id = 1000;
+  d.add(id++, -30, kH0 + 1.4, kR);  // a loose disc on the layer, its centre above h0 + d_max
+  WedgeGeometryInput in = input_of(d);
+  const Surface s0 = surface_of(d);
+  EXPECT_EQ(measure_wedge(in, s0).dp, -30);  // the thesis's rule
+  in.front_rule = FrontRule::Surface;
+  in.min_raised_width = 0.5 * kH0;
+  const WedgeGeometry g = measure_wedge(in, s0);
+  EXPECT_TRUE(g.has_front);
+  EXPECT_EQ(g.dp, kXp);
+  EXPECT_EQ(g.dr, kXr);
+  // Four more raised columns beside the disc: five in all, h0/2, so they count.
+  for (int x = -29; x <= -26; ++x) d.add(id++, x, kH0 + 1.4, kR);
+  in.x = d.x; in.y = d.y; in.radius = d.radius;
+  EXPECT_EQ(measure_wedge(in, surface_of(d)).dp, -30);
+  // Gaps up to max_bridged_gap join a stretch: two raised discs two empty columns ahead of the
+  // wedge's front belong to it once gaps of 2.5 columns are bridged, not before.
+  Discs near = wedge_discs();
+  near.add(id++, kXp - 4, kH0 + 1.4, kR);
+  near.add(id++, kXp - 3, kH0 + 1.4, kR);
+  WedgeGeometryInput bridged = input_of(near);
+  bridged.front_rule = FrontRule::Surface;
+  bridged.min_raised_width = 0.5 * kH0;
+  EXPECT_EQ(measure_wedge(bridged, surface_of(near)).dp, kXp);
+  bridged.max_bridged_gap = 0.25 * kH0;
+  EXPECT_EQ(measure_wedge(bridged, surface_of(near)).dp, kXp - 4);
+  // Nothing raised: no front, the fronts at the S-point as before.
+  const Discs flat = flat_layer();
+  WedgeGeometryInput none = input_of(flat, 0.25);
+  none.front_rule = FrontRule::Surface;
+  none.min_raised_width = 0.5 * kH0;
+  const WedgeGeometry g0 = measure_wedge(none, surface_of(flat));
+  EXPECT_FALSE(g0.has_front);
+  EXPECT_EQ(g0.dp, 0.25);
+  EXPECT_EQ(g0.dr, 0.25);
+}
+
 }  // namespace
 }  // namespace orogen

@@ -18,7 +18,8 @@ namespace {
 constexpr orogen::cli::AddSubcommand kSubcommands[] = {
     orogen::cli::add_run,     orogen::cli::add_render, orogen::cli::add_sweep,
     orogen::cli::add_ensemble, orogen::cli::add_export, orogen::cli::add_analyze,
-    orogen::cli::add_report,  orogen::cli::add_charts, orogen::cli::add_config,
+    orogen::cli::add_report,  orogen::cli::add_charts, orogen::cli::add_sections,
+    orogen::cli::add_config,
 };
 
 // CLI11 reads an unknown first word as a stray argument ("A subcommand is required"): name it.

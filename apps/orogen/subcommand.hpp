@@ -30,6 +30,7 @@ Subcommand add_export(CLI::App& parent);
 Subcommand add_analyze(CLI::App& parent);
 Subcommand add_report(CLI::App& parent);
 Subcommand add_charts(CLI::App& parent);
+Subcommand add_sections(CLI::App& parent);
 Subcommand add_config(CLI::App& parent);
 
 }  // namespace orogen::cli

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace orogen {
 
@@ -18,6 +19,44 @@ double fitted_slope(const Surface& s, double x_lo, double x_hi) {
   return std::atan((n * sxy - sx * sy) / den);
 }
 
+namespace {
+
+// FrontRule::Surface: the extreme x of the discs above `height` that lie in stretches of
+// surface columns holding such discs (gaps up to max_bridged_gap bridged) at least
+// min_raised_width wide; false if none.
+bool stretch_fronts(const WedgeGeometryInput& in, const Surface& s, double height, double& pro, double& retro) {
+  const std::size_t n = s.height.size();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> lo(n, inf), hi(n, -inf);  // extreme x of the raised discs per column
+  for (std::size_t i = 0; i < in.x.size(); ++i) {
+    if (!(in.y[i] > height) || n == 0) continue;
+    const std::size_t k = s.column_of(in.x[i]);
+    lo[k] = std::min(lo[k], in.x[i]);
+    hi[k] = std::max(hi[k], in.x[i]);
+  }
+  // A stretch runs from a raised column over gaps of at most max_gap columns to the last
+  // raised column before a wider gap.
+  const auto max_gap = static_cast<std::size_t>(std::floor(in.max_bridged_gap / s.width));
+  bool found = false;
+  for (std::size_t k = 0; k < n;) {
+    if (!std::isfinite(lo[k])) { ++k; continue; }
+    std::size_t last = k, next = k + 1;
+    while (next < n && next - last <= max_gap + 1) {
+      if (std::isfinite(lo[next])) last = next;
+      ++next;
+    }
+    if (static_cast<double>(last + 1 - k) * s.width >= in.min_raised_width) {
+      if (!found) pro = lo[k];
+      retro = hi[last];
+      found = true;
+    }
+    k = last + 1;
+  }
+  return found;
+}
+
+}  // namespace
+
 WedgeGeometry measure_wedge(const WedgeGeometryInput& in, const Surface& surface) {
   WedgeGeometry g;
   const double inf = std::numeric_limits<double>::infinity();
@@ -29,6 +68,11 @@ WedgeGeometry measure_wedge(const WedgeGeometryInput& in, const Surface& surface
     if (t > top || (t == top && in.x[i] < g.x_peak)) { top = t; g.x_peak = in.x[i]; }
     if (in.y[i] > front_y) { dp = std::min(dp, in.x[i]); dr = std::max(dr, in.x[i]); }
     if (in.y[i] > marker_y) { mp = std::min(mp, in.x[i]); mr = std::max(mr, in.x[i]); }
+  }
+  if (in.front_rule == FrontRule::Surface) {
+    dp = inf;  // the discs' extremes give way to the surface's raised stretches
+    dr = -inf;
+    stretch_fronts(in, surface, front_y, dp, dr);
   }
   g.has_front = std::isfinite(dp);
   g.h = std::isfinite(top) ? top - in.h0 : 0.0;

@@ -50,6 +50,7 @@ std::vector<KeySpec> with_changes(std::vector<KeySpec> table) {
       {"wedge.s_end", kRunEnd | kOnBranch},
       {"wedge.outputs", kOutputCount | kOnBranch},
       {"wedge.erosion_height", kOnBranch},
+      {"wedge.fronts", kOnBranch},
       {"wedge.erosion_every", kOnBranch},
       {"singly.speed_bound", kDisplay},
       {"output.checkpoint_every", kDisplay | kOnBranch},
@@ -187,6 +188,12 @@ const std::vector<KeySpec>& schema() {
       real("wedge.erosion_height", 0.0, ge(0), none, "erode above this elevation, 0 = no erosion [h0]"),
       integer("wedge.erosion_every", 50, ge(1), le(1000000), "time steps between erosion passes"),
       real("wedge.marker_height", 1.5, gt(0), none, "marker fronts are measured at this elevation [h0]"),
+      text("wedge.fronts", "surface", {"surface", "discs"},
+           "how the deformation fronts Dp, Dr (and the tapers from them) are measured: discs, the "
+           "thesis's: the extreme x of any disc centred above h0 + d_max (the only rule before issue "
+           "36's fix); surface, the same but only of such discs in a stretch of surface columns "
+           "holding them (gaps up to h0/4 bridged) at least h0/2 wide, so that a loose disc or "
+           "cluster on the foreland cannot set them. A measurement only: the dynamics do not depend on it"),
       text("wedge.packing_file", "", {},
            "settled tile from a packing run (its packing.h5); empty = settle one first"),
 
@@ -296,6 +303,8 @@ const std::vector<LaterKey>& later_keys() {
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
     out.push_back({"wedge.traction_law", format_value(std::string("drag"))});
+    // The robust deformation fronts (issue 36): runs before them measured the discs' extremes.
+    out.push_back({"wedge.fronts", format_value(std::string("discs"))});
     return out;
   }();
   return keys;

@@ -214,10 +214,10 @@ constexpr std::array kWedgeSeries = {
     Entry{"time", "sqrt(d/g)", "model time", &WedgeSample::time},
     Entry{"S", "-", "normalised convergence: plate displacement / h0", &WedgeSample::S},
     Entry{"H", "h0", "wedge height: highest elevation minus h0", &WedgeSample::H},
-    Entry{"Dp", "h0", "pro-side deformation front: smallest x of discs above h0 + d_max, from the S-point",
+    Entry{"Dp", "h0", "pro-side deformation front (wedge.fronts: raised surface or discs), from the S-point",
           &WedgeSample::Dp},
     Entry{"Mp", "h0", "pro-side marker front: smallest x of discs above the marker height", &WedgeSample::Mp},
-    Entry{"Dr", "h0", "retro-side deformation front: largest x of discs above h0 + d_max", &WedgeSample::Dr},
+    Entry{"Dr", "h0", "retro-side deformation front (wedge.fronts: raised surface or discs)", &WedgeSample::Dr},
     Entry{"Mr", "h0", "retro-side marker front: largest x of discs above the marker height", &WedgeSample::Mr},
     Entry{"T", "h0", "x of the highest disc (peak), from the S-point", &WedgeSample::T},
     Entry{"alpha", "deg", "mean pro-wedge taper: slope from Dp up to the peak", &WedgeSample::alpha},
@@ -246,7 +246,10 @@ std::vector<double> WedgeExperiment::measure(const World& w) const { return seri
 
 WedgeSample WedgeExperiment::sample(const World& w) const {
   const Surface s = surface(w);
-  WedgeGeometryInput in{w.discs.x, w.discs.y, w.discs.radius, spec_.h0, spec_.packing.d_max, spec_.marker_height, 0.0};
+  // A raised stretch of surface counts as deformation from h0/2 wide, gaps up to h0/4 bridged
+  // (wedge.fronts = surface).
+  WedgeGeometryInput in{w.discs.x, w.discs.y, w.discs.radius, spec_.h0, spec_.packing.d_max, spec_.marker_height, 0.0,
+                        spec_.fronts, 0.5 * spec_.h0, 0.25 * spec_.h0};
   const WedgeGeometry g = measure_wedge(in, s);
   const WallContactStats pro = w.wall_contact_stats(w.wall_index(kProBase));
   const WallContactStats retro = w.wall_contact_stats(w.wall_index(kRetroBase));

@@ -7,6 +7,7 @@
 // (6.3), and the wedge measurements of MODEL §8.
 #include <optional>
 
+#include "analysis/wedge_geometry.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/packing_experiment.hpp"
 #include "analysis/displacement_tracker.hpp"
@@ -38,6 +39,7 @@ struct WedgeSpec {
   double erosion_height = 0;   // erode above this multiple of h0 (0: no erosion)
   int erosion_every = 50;      // steps between erosion passes
   double marker_height = 1.5;  // marker fronts at this multiple of h0
+  FrontRule fronts = FrontRule::Surface;  // how series.csv's Dp, Dr are measured (wedge.fronts)
   double column_width_factor = 2.3;
   bool analysis_in_run = false;    // the exhumation analysis during the run (analysis.in_run)
   std::int64_t analysis_every = 1;  // after every this many outputs and at the end (analysis.every)

@@ -5,7 +5,7 @@
 namespace orogen {
 namespace {
 
-constexpr std::array<DatasetDoc, 14> kDocs = {{
+constexpr std::array<DatasetDoc, 15> kDocs = {{
     {"x", "d", "disc centre, horizontal coordinate"},
     {"y", "d", "disc centre, vertical coordinate (up)"},
     {"theta", "rad", "disc rotation angle, counter-clockwise"},
@@ -20,6 +20,7 @@ constexpr std::array<DatasetDoc, 14> kDocs = {{
     {"y0", "d", "disc centre at the start of the experiment, vertical coordinate"},
     {"depth0", "d", "depth below the settled layer's surface at the start of the experiment"},
     {"walls", "d", "wall segments, one row each: end points ax, ay, bx, by"},
+    {"xy", "d", "disc centres as (x, y) rows: a virtual view of x and y (no copy), the XDMF sidecar's geometry"},
 }};
 
 }  // namespace

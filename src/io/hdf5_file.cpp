@@ -372,6 +372,27 @@ void write_2d(hid_t loc, const std::string& name, std::span<const std::int64_t> 
   write_nd(loc, name, v.data(), dims, opt);
 }
 
+void write_columns_view(hid_t loc, const std::string& name, const std::vector<std::string>& columns, std::size_t n) {
+  const std::array<hsize_t, 2> dims{n, columns.size()};
+  const std::array<hsize_t, 1> column_dims{n};
+  Object space = make_space(dims);
+  Object source = make_space(column_dims);
+  Object dcpl(check_id(H5Pcreate(H5P_DATASET_CREATE), "cannot create a dataset property list"), H5Pclose);
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    // Column c of the view: rows 0..n-1, one element wide, from the whole source dataset.
+    const std::array<hsize_t, 2> start{0, c}, count{n, 1};
+    check(H5Sselect_hyperslab(space.id(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+          "cannot select column " + std::to_string(c) + " of " + quoted(name));
+    check(H5Pset_virtual(dcpl.id(), space.id(), ".", columns[c].c_str(), source.id()),
+          "cannot map " + quoted(columns[c]) + " into " + quoted(name));
+  }
+  check(H5Sselect_all(space.id()), "cannot select all of " + quoted(name));
+  Object ds(check_id(H5Dcreate2(loc, name.c_str(), H5T_IEEE_F64LE, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
+                     "cannot create the virtual dataset " + quoted(name)),
+            H5Dclose);
+  ds.close();
+}
+
 template <class T>
 std::vector<T> read(hid_t loc, const std::string& name) {
   Object ds = open_dataset(loc, name);

@@ -63,7 +63,8 @@ void document(hid_t group, std::string_view name) {
   h5::set_dataset_attr_string(group, std::string(name), kDescriptionAttr, doc->description);
 }
 
-void write_group(hid_t group, const SnapshotFrame& f, h5::WriteOptions storage) {
+// `path` is the group's path in its file ("/" or "/output_000000/"), for the `xy` view.
+void write_group(hid_t group, const std::string& path, const SnapshotFrame& f, h5::WriteOptions storage) {
   // for_each_array is the one list of per-disc arrays; it only reads here.
   std::size_t written = 0;
   const_cast<Discs&>(*f.discs).for_each_array([&](std::string_view name, const auto& v) {
@@ -76,6 +77,9 @@ void write_group(hid_t group, const SnapshotFrame& f, h5::WriteOptions storage) 
   });
   if (written != kSnapshotDiscArrays.size())
     throw std::logic_error("Discs lacks an array that snapshots store; update kSnapshotDiscArrays");
+  // x and y as (x, y) rows without a copy: the geometry of the XDMF sidecar (xdmf_writer.cpp).
+  h5::write_columns_view(group, "xy", {path + "x", path + "y"}, f.discs->size());
+  document(group, "xy");
   for (const auto& field : f.fields) {
     h5::write(group, field.name, std::span(field.values), storage);
     h5::set_dataset_attr_string(group, field.name, kUnitsAttr, field.units);
@@ -153,7 +157,7 @@ SnapshotWriter::SnapshotWriter(std::filesystem::path path, const SnapshotMetadat
   remove_data_beyond(path_, 0);
   std::filesystem::create_directories(data_folder(path_));
   write_index();
-  write_xdmf(xdmf_sidecar(path_), xdmf_);
+  write_sidecar();
 }
 
 SnapshotWriter SnapshotWriter::reopen(std::filesystem::path path, std::int64_t keep, h5::WriteOptions storage) {
@@ -182,7 +186,8 @@ SnapshotWriter SnapshotWriter::reopen(std::filesystem::path path, std::int64_t k
     h5::File f = h5::File::open(w.path_.parent_path() / file, h5::File::Mode::ReadOnly);
     w.xdmf_.push_back(describe_xdmf_output(f.id(), file, "/"));
   }
-  write_xdmf(xdmf_sidecar(w.path_), w.xdmf_);
+  w.write_index();  // its disc_index now covers the kept outputs
+  w.write_sidecar();
   return w;
 }
 
@@ -191,14 +196,19 @@ void SnapshotWriter::write_index() const {
   write_root_attrs(f.id(), meta_, count_);
   for (std::int64_t k = 0; k < count_; ++k)
     h5::link_external(f.id(), snapshot_group_name(k), output_file(path_, k).string(), "/");
+  write_disc_index(f.id(), most_discs(xdmf_));
   write_file_atomically(path_, f.image());
+}
+
+void SnapshotWriter::write_sidecar() const {
+  write_xdmf(xdmf_sidecar(path_), xdmf_, {path_.filename().string(), most_discs(xdmf_)});
 }
 
 void SnapshotWriter::append(const SnapshotFrame& frame) {
   validate(frame);
   {
     h5::File f = h5::File::create_in_memory();
-    write_group(f.id(), frame, storage_);
+    write_group(f.id(), "/", frame, storage_);
     // Each output file carries the configuration too, so that one copied alone says what it is.
     if (const auto it = meta_.strings.find(kConfigAttr); it != meta_.strings.end())
       h5::set_attr_string(f.id(), kConfigAttr, it->second);
@@ -208,7 +218,7 @@ void SnapshotWriter::append(const SnapshotFrame& frame) {
   }
   ++count_;
   write_index();
-  write_xdmf(xdmf_sidecar(path_), xdmf_);
+  write_sidecar();
 }
 
 void SnapshotWriter::set_metadata_string(const std::string& name, const std::string& value) {
@@ -228,14 +238,15 @@ void write_single_snapshot(const std::filesystem::path& path, const SnapshotMeta
   XdmfOutput xdmf;
   {
     h5::Group g = h5::Group::create(f.id(), snapshot_group_name(0));
-    write_group(g.id(), frame, storage);
     std::string group_path("/");  // built piecewise: GCC 12 warns falsely on "/" + std::string
     group_path.append(snapshot_group_name(0)).append("/");
+    write_group(g.id(), group_path, frame, storage);
     xdmf = describe_xdmf_output(g.id(), path.filename().string(), group_path);
     g.close();
   }
+  write_disc_index(f.id(), xdmf.n_discs);
   write_file_atomically(path, f.image());
-  write_xdmf(xdmf_sidecar(path), {xdmf});
+  write_xdmf(xdmf_sidecar(path), {xdmf}, {path.filename().string(), xdmf.n_discs});
 }
 
 SnapshotMetadata read_snapshot_metadata(const std::filesystem::path& path) {

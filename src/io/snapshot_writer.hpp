@@ -83,6 +83,7 @@ class SnapshotWriter {
  private:
   SnapshotWriter(std::filesystem::path path, SnapshotMetadata meta, std::int64_t count, h5::WriteOptions storage);
   void write_index() const;
+  void write_sidecar() const;  // snapshots.xmf, after write_index (whose disc_index it reads)
   std::filesystem::path path_;
   std::vector<XdmfOutput> xdmf_;  // the sidecar's outputs (snapshots.xmf)
   SnapshotMetadata meta_;

@@ -26,6 +26,17 @@ def blocks(data):
     return out
 
 
+def leaves(data):
+    """Every leaf dataset of a composite dataset, in order (the default reader names none)."""
+    out = []
+    it = data.NewIterator()
+    it.InitTraversal()
+    while not it.IsDoneWithTraversal():
+        out.append(it.GetCurrentDataObject())
+        it.GoToNextItem()
+    return out
+
+
 def describe(ds):
     pd, cd = ds.GetPointData(), ds.GetCellData()
     return {
@@ -52,6 +63,14 @@ def main(run_dir, png):
     if walls is not None:
         report["xmf_wall_points"] = [list(walls.GetPoint(i))[:2] for i in range(walls.GetNumberOfPoints())]
 
+    # The reader ParaView picks for a double-clicked .xmf (5.11: Xdmf3ReaderS) reads the same.
+    default = OpenDataFile(run_dir + "/snapshots.xmf")
+    default.UpdatePipelineInformation()
+    report["default_reader"] = default.GetXMLName()
+    report["default_times"] = list(default.TimestepValues)
+    default.UpdatePipeline(times[-1])
+    report["default_blocks"] = [describe(ds) for ds in leaves(servermanager.Fetch(default))]
+
     # A packing run's packing.h5 has a sidecar of its own (one output, in a group of the file).
     if os.path.exists(run_dir + "/packing.xmf"):
         packing = XDMFReader(FileNames=[run_dir + "/packing.xmf"])
@@ -59,6 +78,9 @@ def main(run_dir, png):
         report["packing_times"] = list(packing.TimestepValues)
         packing.UpdatePipeline(report["packing_times"][-1])
         report["packing_blocks"] = {name: describe(ds) for name, ds in blocks(servermanager.Fetch(packing)).items()}
+        default_packing = OpenDataFile(run_dir + "/packing.xmf")
+        default_packing.UpdatePipeline(report["packing_times"][-1])
+        report["default_packing_blocks"] = [describe(ds) for ds in leaves(servermanager.Fetch(default_packing))]
 
     pvd = PVDReader(FileName=run_dir + "/run.pvd")
     pvd.UpdatePipelineInformation()

@@ -43,7 +43,8 @@ class ExportTest(unittest.TestCase):
         with h5py.File(os.path.join(cls.run_dir, "snapshots.h5"), "r") as f:
             cls.n_outputs = int(f.attrs["n_outputs"])
             g = f["output_000001"]
-            cls.snap = {name: g[name][()] for name in g if name != "walls" and isinstance(g[name], h5py.Dataset)}
+            cls.snap = {name: g[name][()] for name in g  # xy: a view of x and y for the sidecar
+                        if name not in ("walls", "xy") and isinstance(g[name], h5py.Dataset)}
             cls.step = int(g.attrs["step"])
 
     @classmethod

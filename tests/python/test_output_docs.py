@@ -18,6 +18,7 @@ import tempfile
 import unittest
 
 import h5py
+import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DOC = os.path.join(REPO, "docs", "output-files.md")
@@ -140,7 +141,7 @@ def csv_columns(path):
 
 
 def h5_type(ds):
-    dims = "[n]" if ds.ndim == 1 else "[n_walls, 4]" if ds.ndim == 2 else "?"
+    dims = "[n]" if ds.ndim == 1 else ("[n, 2]" if ds.shape[1] == 2 else "[n_walls, 4]") if ds.ndim == 2 else "?"
     return "%s %s" % (ds.dtype.name, dims)
 
 
@@ -200,14 +201,23 @@ class OutputFilesMatchTheirDoc(unittest.TestCase):
                     self.assertEqual(f.attrs["config_toml"], config, path)
             with h5py.File(os.path.join(run, "snapshots.h5"), "r") as index:
                 self.assertEqual(index.attrs["config_toml"], config)
-                self.assertEqual(len(index.keys()), int(index.attrs["n_outputs"]))  # links only, no datasets
+                # The links, and the sidecar's vertex cells (as many as the largest output's discs).
+                self.assertEqual(len(index.keys()), int(index.attrs["n_outputs"]) + 1)
+                self.check_disc_index(index, max(index[k]["x"].shape[0] for k in index if k.startswith("output_")))
                 self.check_group(index["output_000000"], experiment, "snapshots.h5/output_000000")
         self.assertEqual(seen_groups, set(documented_groups()), "groups written vs documented")
+
+    def check_disc_index(self, f, n):
+        ds = f["disc_index"]
+        np.testing.assert_array_equal(ds[()], np.arange(n, dtype=np.int32))
+        self.assertEqual((ds.attrs.get("units"), ds.dtype.name), ("-", "int32"))
+        self.assertIn("snapshots.xmf", ds.attrs.get("description"))
 
     def test_packing_file_matches_the_doc(self):
         run = self.dirs["packing"]
         with h5py.File(os.path.join(run, "packing.h5"), "r") as f:
-            self.assertEqual(list(f.keys()), ["output_000000"])
+            self.assertEqual(list(f.keys()), ["disc_index", "output_000000"])
+            self.check_disc_index(f, f["output_000000"]["x"].shape[0])
             self.check_group(f["output_000000"], "packing", "packing.h5")
             self.assertEqual(f.attrs["config_toml"], read_text(os.path.join(run, "config.toml")))
 

@@ -107,6 +107,8 @@ class ParaViewOpensARun(unittest.TestCase):
         self.assertEqual(seen["packing_times"], [time])
         self.assertEqual(seen["packing_blocks"]["discs"]["points"], n)
         self.assertEqual(seen["packing_blocks"]["discs"]["arrays"], arrays)
+        self.assertEqual([(b["points"], b["cells"]) for b in seen["default_packing_blocks"] if b["points"] == n],
+                         [(n, n)])
         # A finished packing keeps no walls (the box is gone); any there are show as line cells.
         self.assertEqual(seen["packing_blocks"].get("walls", {"cells": 0})["cells"], n_walls)
 
@@ -137,6 +139,20 @@ class ParaViewOpensARun(unittest.TestCase):
         self.assertEqual(contacts["points"], 2 * self.n_contacts)
         self.assertEqual(contacts["cell_types"], [VTK_POLY_LINE])
         self.assertEqual(contacts["cell_arrays"], ["fn", "ft", "overlap"])
+
+    def test_the_default_reader_opens_the_sidecar_as_the_legacy_one_does(self):
+        # What a double-click opens: in ParaView 5.11 the Xdmf3 reader, which needs explicit
+        # cells and a plain (n, 2) geometry (the output's `xy` view).
+        self.assertIn("Xdmf3", self.seen["default_reader"])
+        self.assertEqual(self.seen["default_times"], self.times)
+        legacy = self.seen["xmf_blocks"]
+        got = sorted((b["points"], b["cells"], tuple(b["cell_types"]), tuple(b["arrays"]), tuple(b["cell_arrays"]))
+                     for b in self.seen["default_blocks"])
+        want = sorted((b["points"], b["cells"], tuple(b["cell_types"]), tuple(b["arrays"]), tuple(b["cell_arrays"]))
+                      for b in legacy.values())
+        self.assertEqual(got, want)
+        discs = [b for b in self.seen["default_blocks"] if b["points"] == self.n_discs][0]
+        self.assertEqual(discs["bounds"][:4], legacy["discs"]["bounds"][:4])
 
     def test_walls_are_line_cells(self):
         walls = self.seen["xmf_blocks"]["walls"]

@@ -26,10 +26,12 @@ CHARTS = {
     "simple_model.png": ("Simple Model against the runs", ""),
 }
 
-# Animations by frames folder (orogen render --frames-dir): label, thesis figure.
+# Animations by frames folder (orogen sections, orogen render --frames-dir): label, thesis figure.
 ANIMATIONS = {
     "frames": ("Horizons (initial depth)", "Figs 4.5, 5.3"),
-    "frames_faults": ("Faults (relative displacement of neighbours)", "Fig 5.7"),
+    "frames_faults": ("Faults (orogen sections: incremental shear strain; orogen render: relative displacement)",
+                      "Fig 5.7"),
+    "frames_vectors": ("Displacement over the last three outputs", "Fig 5.11"),
     "frames_rel_disp": ("Faults (relative displacement of neighbours)", "Fig 5.7"),
     "frames_max_depth": ("Maximum depth so far (orogen.charts.exhumation_frames)", ""),
     "frames_age": ("Closure-depth age (orogen.charts.exhumation_frames)", ""),

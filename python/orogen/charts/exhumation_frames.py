@@ -15,8 +15,6 @@ are fixed over the run (0 to the 99th percentile of the last output), so frames 
 
 import argparse
 import os
-import shutil
-import subprocess
 import sys
 
 import matplotlib
@@ -26,7 +24,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from ..analysis import exhumation as orogen_analysis  # noqa: E402
-from ..atomic import save_figure, temporary_path  # noqa: E402
+from ..atomic import save_figure  # noqa: E402
+from .animation import animate  # noqa: E402
 
 
 def frames(ds, values, label, what, cmap, folder, every, width_px):
@@ -60,27 +59,6 @@ def frames(ds, values, label, what, cmap, folder, every, width_px):
         ax.set_title("S = %.2f: %s%s" % (float(ds.S[k]), what, "" if stride == 1 else " (every %d-th disc)" % stride),
                      fontsize=9)
         save_figure(fig, os.path.join(folder, "frame_%06d.png" % k))
-
-
-def animate(run, name, fps):
-    """animation_NAME.mp4 and .gif from RUN/NAME/frame_*.png, as `orogen render` assembles its own."""
-    ffmpeg = shutil.which("ffmpeg")
-    if not ffmpeg:
-        return False
-    pattern = os.path.join(run, name, "frame_*.png")
-    for ext, extra in (("mp4", ["-pix_fmt", "yuv420p", "-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2"]),
-                       ("gif", ["-vf", "scale=800:-1:flags=lanczos"])):
-        out = os.path.join(run, "animation_%s.%s" % (name, ext))
-        try:
-            with temporary_path(out, suffix="." + ext) as tmp:
-                r = subprocess.run([ffmpeg, "-y", "-loglevel", "error", "-framerate", str(fps), "-pattern_type",
-                                    "glob", "-i", pattern, *extra, tmp], capture_output=True)
-                if r.returncode != 0:
-                    raise RuntimeError(r.stderr.decode(errors="replace")[-300:])
-        except RuntimeError as e:
-            print("warning: ffmpeg failed on %s: %s" % (out, e), file=sys.stderr)
-            return False
-    return True
 
 
 def main(argv=None):
