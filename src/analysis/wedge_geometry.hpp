@@ -40,7 +40,6 @@ struct WedgeGeometryInput {
 
 WedgeGeometry measure_wedge(const WedgeGeometryInput& in, const Surface& surface);
 
-
 // Least-squares slope of surface heights between x_lo and x_hi (column centres), as an angle.
 double fitted_slope(const Surface& surface, double x_lo, double x_hi);
 

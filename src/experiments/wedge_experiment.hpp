@@ -7,11 +7,11 @@
 // (6.3), and the wedge measurements of MODEL §8.
 #include <optional>
 
-#include "analysis/wedge_geometry.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/packing_experiment.hpp"
 #include "analysis/displacement_tracker.hpp"
 #include "analysis/surface.hpp"
+#include "analysis/wedge_geometry.hpp"
 #include "experiments/wedge_summary.hpp"
 #include "io/archive_fields.hpp"
 #include "packing/tile.hpp"

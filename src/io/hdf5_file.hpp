@@ -94,12 +94,12 @@ void write_2d(hid_t loc, const std::string& name, std::span<const double> v, std
 void write_2d(hid_t loc, const std::string& name, std::span<const std::int64_t> v, std::size_t rows,
               std::size_t cols, WriteOptions opt = {});
 
-// Reads a 1-D dataset of exactly the matching element type (bit-exact round trip).
 // A (n x columns.size()) float64 virtual dataset whose column c reads the 1-D float64 dataset
 // columns[c] (n values, a path in the same file): no data is copied. It lets a reader that
 // wants interleaved coordinates (ParaView's default XDMF reader) read x and y as (x, y) rows.
 void write_columns_view(hid_t loc, const std::string& name, const std::vector<std::string>& columns, std::size_t n);
 
+// Reads a 1-D dataset of exactly the matching element type (bit-exact round trip).
 template <class T>
 std::vector<T> read(hid_t loc, const std::string& name);
 extern template std::vector<double> read<double>(hid_t, const std::string&);
