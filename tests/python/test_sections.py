@@ -216,11 +216,19 @@ class MainJobSections(unittest.TestCase):
         self.assertEqual(imread(os.path.join(mine, last)).shape, imread(os.path.join(other, last)).shape)
 
     def test_bad_input_is_named(self):
-        cases = (([self.folder, "--kinds", "horizons,folds"], "--kinds 'horizons,folds'"),
+        import h5py
+
+        packing = os.path.join(self.tmp, "packing")
+        os.makedirs(packing)
+        with h5py.File(os.path.join(packing, "snapshots.h5"), "w") as f:
+            f.attrs["experiment"], f.attrs["h0"], f.attrs["n_outputs"] = "packing", 10.0, 0
+        cases = ((["packing_dir"], "a run of experiment 'packing'"),
+                 ([self.folder, "--kinds", "horizons,folds"], "--kinds 'horizons,folds'"),
                  ([self.folder, "--exaggeration", "0.5"], "--exaggeration '0.5'"),
                  ([self.folder, "--width", "100"], "--width 100"),
                  ([os.path.join(self.tmp, "nothing")], "no such folder"))
         for args, text in cases:
+            args = [packing if a == "packing_dir" else a for a in args]
             r = subprocess.run(module_command("orogen.charts.sections", *args), capture_output=True, text=True)
             self.assertEqual(r.returncode, 2, args)
             self.assertIn(text, r.stderr)
