@@ -346,6 +346,8 @@ def draw(kind, o, view, scale, value, band, width_px):
         fig.colorbar(matplotlib.cm.ScalarMappable(norm, cmap), cax=cax, extend="max",
                      label="shear strain since the previous output")
         title += "   faults: incremental maximum shear strain (scale fixed over the run)"
+        if not np.isfinite(value).any():
+            title += "; the first output: no strain yet"
     else:
         draw_discs(ax, o, np.tile(matplotlib.colors.to_rgba("#dcdcdc"), (len(o["x"]), 1)))
         u, v = o["disp3_x"], o["disp3_y"]
