@@ -222,7 +222,13 @@ class MainJobSections(unittest.TestCase):
         os.makedirs(packing)
         with h5py.File(os.path.join(packing, "snapshots.h5"), "w") as f:
             f.attrs["experiment"], f.attrs["h0"], f.attrs["n_outputs"] = "packing", 10.0, 0
+        damaged = os.path.join(self.tmp, "damaged")
+        os.makedirs(damaged)
+        with open(os.path.join(self.folder, "snapshots.h5"), "rb") as f, \
+                open(os.path.join(damaged, "snapshots.h5"), "wb") as g:
+            g.write(f.read(3000))  # truncated
         cases = ((["packing_dir"], "a run of experiment 'packing'"),
+                 ([damaged], "is not a readable orogen snapshot file"),
                  ([self.folder, "--kinds", "horizons,folds"], "--kinds 'horizons,folds'"),
                  ([self.folder, "--exaggeration", "0.5"], "--exaggeration '0.5'"),
                  ([self.folder, "--width", "100"], "--width 100"),

@@ -104,6 +104,13 @@ def read_outputs(run):
     path = os.path.join(run, "snapshots.h5")
     if not os.path.isfile(path):
         raise SectionError("%s not found: %s holds no run (orogen run --out DIR)" % (path, run))
+    try:
+        return _read_outputs(path, run)
+    except (OSError, KeyError, ValueError) as e:  # h5py's word for a damaged or foreign file
+        raise SectionError("%s is not a readable orogen snapshot file: %s" % (path, e)) from e
+
+
+def _read_outputs(path, run):
     fields = ("x", "y", "radius", "id", "depth0", "x0", "disp3_x", "disp3_y")
     outputs = []
     with Snapshots(path) as snaps:
@@ -523,6 +530,9 @@ def main(argv=None):
     except SectionError as e:
         print("error: %s" % e, file=sys.stderr)
         return 2
+    except OSError as e:  # a frame, still or animation that cannot be written
+        print("error: %s" % e, file=sys.stderr)
+        return 1
     print("sections of %d outputs in %s: %s (vertical exaggeration %g, fault scale %s)" %
           (summary["outputs_drawn"], ", ".join(a.runs), ", ".join(summary["frames"].values()),
            summary["vertical_exaggeration"], summary["scales"]["faults_shear_strain_max"]))
