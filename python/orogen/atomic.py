@@ -46,11 +46,12 @@ def write_text(path, text):
     write_atomically(path, lambda f: f.write(text))
 
 
-def save_figure(fig, path):
-    """Writes a matplotlib figure as PNG (110 dpi) atomically, then closes it."""
+def save_figure(fig, path, fmt="png", dpi=110, metadata=None):
+    """Writes a matplotlib figure (PNG at 110 dpi unless told otherwise) atomically, then closes it."""
     import matplotlib.pyplot as plt  # only the charts call this; they set the backend
     try:
-        write_atomically(path, lambda f: fig.savefig(f, format="png", dpi=110), binary=True, suffix=".png")
+        write_atomically(path, lambda f: fig.savefig(f, format=fmt, dpi=dpi, metadata=metadata), binary=True,
+                         suffix="." + fmt)
     finally:
         plt.close(fig)
 

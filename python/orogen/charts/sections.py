@@ -58,7 +58,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import EllipseCollection, LineCollection  # noqa: E402
 from matplotlib.colors import ListedColormap, Normalize  # noqa: E402
 
-from ..atomic import write_atomically, write_text  # noqa: E402
+from ..atomic import save_figure, write_text  # noqa: E402
 from ..frames import Snapshots  # noqa: E402
 from .animation import animate  # noqa: E402
 
@@ -382,14 +382,6 @@ def arrow_discs(o, view):
     return idx[np.sort(first)]
 
 
-def save(fig, path, fmt):
-    try:
-        write_atomically(path, lambda f: fig.savefig(f, format=fmt, dpi=DPI, metadata=METADATA[fmt]),
-                         binary=True, suffix="." + fmt)
-    finally:
-        plt.close(fig)
-
-
 # --------------------------------------------------------------------------------------------
 # The run's frames and stills
 
@@ -401,7 +393,8 @@ def _draw_job(job):
     s = _shared
     value = s["strains"][run][k] if kind == "faults" else None
     scale = s["scales"].get(kind)
-    save(draw(kind, s["outputs"][run][k], s["view"], scale, value, s["band"], s["width"]), path, fmt)
+    save_figure(draw(kind, s["outputs"][run][k], s["view"], scale, value, s["band"], s["width"]), path, fmt, DPI,
+                METADATA[fmt])
     return path
 
 
