@@ -11,8 +11,10 @@ cmake --build --preset release
 scripts/install-python.sh   # the Python package orogen: charts, statistics, atlas (docs/python.md)
 rm -rf runs/main
 build/release/orogen run --out runs/main
+# The faults of every output (faults.csv), drawn on the fault frames (docs/materials.md).
+/usr/bin/python3 -m orogen.analysis.faults runs/main
 # Cross-sections: horizon and fault frames with their animations, PNG and PDF stills of the
 # last output (python3 -m orogen.charts.sections; docs/rendering.md).
 build/release/orogen sections runs/main
 build/release/orogen charts runs/main   # python3 -m orogen.charts.wedge runs/main --out runs/main/charts
-echo "main job done: runs/main (series.csv, snapshots.h5, run.pvd, frames/, frames_faults/, animation*.mp4/.gif, sections/, charts/)"
+echo "main job done: runs/main (series.csv, snapshots.h5, run.pvd, frames/, frames_faults/, faults.csv, animation*.mp4/.gif, sections/, charts/)"

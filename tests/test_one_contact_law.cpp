@@ -43,8 +43,11 @@ TEST(OneContactLaw, BlockKernelMatchesOnePairThroughTheKernel) {
           b.gn[k] = rng.uniform(0, 50);
           b.gs[k] = 0.5 * b.gn[k];
           b.xi[k] = xi[k] = rng.uniform(-0.01, 0.01);  // large ones slip at once
+          b.mu[k] = mu;
         }
+        ContactBlock with_materials = b;
         contact_forces_block<Normal>(b, kContactBlock, kn, ks, mu, dt);
+        contact_forces_block_materials<Normal>(with_materials, kContactBlock, kn, ks, dt);
         for (int k = 0; k < kContactBlock; ++k) {
           const ContactLane f = contact_lane<Normal>(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k],
                                                      b.wj[k], b.gn[k], b.gs[k], xi[k], kn, ks, mu, dt);
@@ -53,6 +56,11 @@ TEST(OneContactLaw, BlockKernelMatchesOnePairThroughTheKernel) {
           EXPECT_TRUE(same_bits(f.fx, b.fx[k]));
           EXPECT_TRUE(same_bits(f.fy, b.fy[k]));
           EXPECT_TRUE(same_bits(f.ft, b.ft[k]));
+          // The materials' block (each pair's own friction, here all mu) gives the same bits.
+          EXPECT_TRUE(same_bits(f.xi, with_materials.xi[k]));
+          EXPECT_TRUE(same_bits(f.fx, with_materials.fx[k]));
+          EXPECT_TRUE(same_bits(f.ft, with_materials.ft[k]));
+          EXPECT_TRUE(same_bits(f.slip, with_materials.slip[k]));
           if (!f.touching) continue;
           ++touching;
           slipping += f.at_limit;

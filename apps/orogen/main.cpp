@@ -18,7 +18,7 @@ namespace {
 constexpr orogen::cli::AddSubcommand kSubcommands[] = {
     orogen::cli::add_run,     orogen::cli::add_render, orogen::cli::add_sweep,
     orogen::cli::add_ensemble, orogen::cli::add_export, orogen::cli::add_analyze,
-    orogen::cli::add_report,  orogen::cli::add_charts, orogen::cli::add_sections,
+    orogen::cli::add_report,  orogen::cli::add_charts, orogen::cli::add_sections, orogen::cli::add_calibrate,
     orogen::cli::add_config,
 };
 

@@ -31,6 +31,7 @@ Subcommand add_analyze(CLI::App& parent);
 Subcommand add_report(CLI::App& parent);
 Subcommand add_charts(CLI::App& parent);
 Subcommand add_sections(CLI::App& parent);
+Subcommand add_calibrate(CLI::App& parent);
 Subcommand add_config(CLI::App& parent);
 
 }  // namespace orogen::cli

@@ -34,7 +34,7 @@ ContactList measure(const World& w) {
     const ContactLane f = contact_lane<Normal>(d.x[j] - d.x[i], d.y[j] - d.y[i], d.radius[i], d.radius[j],
                                                d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.omega[i], d.omega[j], gn,
                                                w.law.tangential_damping_ratio * gn, p.xi, w.law.kn, w.law.ks,
-                                               w.law.mu, w.dt);
+                                               w.contact_friction(i, j), w.dt);
     if (!f.touching) return;
     const double reach = d.radius[i] - 0.5 * f.delta;  // centre of i to the middle of the overlap
     add(c, false, d.id[i], d.id[j], i, j, d.x[i] + reach * f.nx, d.y[i] + reach * f.ny, f.nx, f.ny, f.fn, f.ft, f.fx,

@@ -1,4 +1,5 @@
 #include "config/config.hpp"
+#include "config/config_materials.hpp"
 #include "config/toml_file.hpp"
 
 #include <toml++/toml.h>
@@ -312,7 +313,8 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
   if (file) {
     const std::string path = file->string();
     const std::string text = read_config_text(*file);
-    const toml::table root = parse_toml_text(text, path);
+    toml::table root = parse_toml_text(text, path);
+    take_layering(root, path, cfg.layering_);  // [materials.NAME], [[layer.units]]: not flat keys
     // Gather every leaf with its dotted name, then report in file order (toml++ sorts keys).
     struct Entry {
       std::string name;
@@ -369,6 +371,10 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
     const std::string name(trim(std::string_view(arg).substr(0, eq)));
     const std::string raw(trim(std::string_view(arg).substr(eq + 1)));
     const std::string shown = raw.empty() ? "\"\"" : raw;
+    if (is_material_override(name)) {
+      set_material_override(cfg.layering_, name, raw);
+      continue;
+    }
     const auto idx = find_key(name);
     if (!idx) throw config_error(kSetSource, name, shown, unknown_key_text(name));
     const KeySpec& spec = schema()[*idx];
@@ -389,8 +395,16 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
     }
     cfg.sources_[*idx] = kSetSource;
   }
+  finish_layering(cfg.layering_, cfg.get_float("layer.thickness"), cfg.source_of("layer.thickness"));
   return cfg;
 }
+
+ConfigValue convert_value(const KeySpec& spec, const toml::node& node, const std::string& source,
+                          const std::string& shown) {
+  return convert(spec, node, source, shown);
+}
+
+std::string render_node(const toml::node& node) { return render(node); }
 
 const ConfigValue& Config::lookup(std::string_view key, KeyType type) const {
   const auto idx = find_key(key);
@@ -460,6 +474,7 @@ std::string Config::to_toml() const {
   const auto& s = schema();
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (s[i].section() != section) {
+      if (section == "layer") out += units_toml(layering_);  // a key of [layer] outside the schema
       section = s[i].section();
       out += "\n[" + std::string(section) + "]\n";
     }
@@ -469,7 +484,7 @@ std::string Config::to_toml() const {
     out += "# " + s[i].doc + " (allowed: " + allowed + ")\n";
     out += std::string(s[i].key()) + " = " + format_value(values_[i]) + "\n";
   }
-  return out;
+  return out + materials_toml(layering_);
 }
 
 }  // namespace orogen

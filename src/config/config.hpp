@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "config/schema.hpp"
+#include "contact/materials.hpp"
 #include "util/command_error.hpp"
 
 namespace orogen {
@@ -26,6 +27,13 @@ struct ConfigError : BadInput {
 // SOURCE is a file path, "--set", or Config::source_of(key) for cross-key checks.
 ConfigError config_error(std::string_view source, std::string_view key, std::string_view value,
                          std::string_view allowed);
+
+// [materials.NAME] and [[layer.units]] (docs/materials.md): read by config_materials.cpp.
+struct LayeringConfig {
+  MaterialTable materials;  // its units: [[layer.units]]
+  std::vector<std::vector<std::string>> given;  // per material: the keys set (the others default)
+  std::string source = "default";               // where they were given
+};
 
 class Config {
  public:
@@ -59,8 +67,16 @@ class Config {
   // it back gives the same configuration (floats round-trip exactly).
   std::string to_toml() const;
 
+  // Named materials ([materials.NAME], in file order) and the incoming section ([[layer.units]],
+  // from the base up): both empty for the thesis's one material (docs/materials.md).
+  const MaterialTable& materials() const { return layering_.materials; }
+  const std::vector<LayerUnit>& units() const { return layering_.materials.units; }
+  // Where the materials or the units were given, for messages ("default" when not).
+  const std::string& materials_source() const { return layering_.source; }
+
  private:
   const ConfigValue& lookup(std::string_view key, KeyType type) const;
+  LayeringConfig layering_;
 
   std::vector<ConfigValue> values_;   // one per schema() entry, same order
   std::vector<std::string> sources_;  // "default", "--set" or the file path

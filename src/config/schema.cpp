@@ -234,6 +234,9 @@ const std::vector<KeySpec>& schema() {
            "begins); slow enough to be quasi-static [1 / sqrt(d/g)]"),
       real("biaxial.strain_end", 0.2, gt(0), le(0.5), "shear until this axial strain [-]"),
       integer("biaxial.outputs", 100, ge(6), le(kMaxOutputs), "output steps over the shearing"),
+      text("biaxial.material", "", {},
+           "the material of the sample, a name of [materials] (docs/materials.md); empty: the configuration's "
+           "units, or its first material; bonded once consolidated (orogen calibrate sets it)"),
       real("biaxial.servo_gain", 1.0, gt(0), le(2),
            "stress-controlled walls move at gain x stress error x d / (k_n dt): the fraction of the error "
            "removed per step against a rigid sample with one contact per d of wall; unstable "
@@ -299,7 +302,7 @@ const std::vector<LaterKey>& later_keys() {
     std::vector<LaterKey> out;
     for (const std::string_view name :
          {"contact.normal_force", "contact.damping", "contact.damping_rate", "singly.speed_bound",
-          "particles.placement"})
+          "particles.placement", "biaxial.material"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
     out.push_back({"wedge.traction_law", format_value(std::string("drag"))});
@@ -379,6 +382,33 @@ std::string format_value(const ConfigValue& value) {
   return out + "\"";
 }
 
+const std::vector<KeySpec>& material_schema() {
+  static const std::vector<KeySpec> keys = {
+      real("friction", 0.3, ge(0), none, "peak Coulomb coefficient of the material's contacts (required) [-]"),
+      real("friction_residual", 0.3, ge(0), none,
+           "friction after weakening_distance of slip; at most friction (default: friction, no weakening) [-]"),
+      real("weakening_distance", 1.0, gt(0), none,
+           "slip a disc accumulates on its contacts while its friction falls linearly from peak to residual [d]"),
+      real("bond_tensile_strength", 0.0, ge(0), none,
+           "tensile strength of the bonds between the material's touching discs; 0 with bond_shear_strength 0: no "
+           "bonds [rho g d]"),
+      real("bond_shear_strength", 0.0, ge(0), none, "shear strength of its bonds (default: bond_tensile_strength) [rho g d]"),
+      real("bond_stiffness", 1.0, gt(0), le(1e6),
+           "bond normal stiffness per unit of bond width, in contact.kn per d (shear: times contact.ks_ratio) [-]"),
+      real("bond_radius_factor", 1.0, gt(0), le(1), "bond half width over the smaller disc's radius (lambda) [-]"),
+      real("bond_strength_scatter", 0.0, ge(0), le(1),
+           "coefficient of variation of each bond's strengths (seeded normal, cut at zero) [-]"),
+      real("bond_gap", 0.05, ge(0), le(1), "pairs whose surfaces are at most this far apart are bonded [d]"),
+  };
+  return keys;
+}
+
+const KeySpec* find_material_key(std::string_view key) {
+  for (const auto& k : material_schema())
+    if (k.name == key) return &k;
+  return nullptr;
+}
+
 std::string reference_markdown() {
   static const char* type_names[] = {"float", "int", "bool", "string"};
   std::string out;
@@ -395,6 +425,23 @@ std::string reference_markdown() {
              format_value(k.default_value) + "` | " + allowed + " | " + k.doc + " |\n";
     }
   }
+  out += "\n### [materials.NAME]\n\n";
+  out += "Named materials (docs/materials.md), in the order the file gives them; none: contact.mu everywhere.\n\n";
+  out += "| key | type | default | allowed | meaning |\n";
+  out += "|-----|------|---------|---------|---------|\n";
+  for (const auto& k : material_schema()) {
+    std::string def = "`" + format_value(k.default_value) + "`";
+    if (k.name == "friction") def = "required";
+    if (k.name == "friction_residual") def = "`friction`";
+    if (k.name == "bond_shear_strength") def = "`bond_tensile_strength`";
+    out += "| `" + k.name + "` | float | " + def + " | " + allowed_text(k) + " | " + k.doc + " |\n";
+  }
+  out += "\n### [[layer.units]]\n\n";
+  out += "The incoming section from the base up (needs [materials]); the last unit fills the layer to its top.\n\n";
+  out += "| key | type | default | allowed | meaning |\n";
+  out += "|-----|------|---------|---------|---------|\n";
+  out += "| `material` | string | required | a name of [materials] | the unit's material |\n";
+  out += "| `thickness` | float | required | > 0, all units together at most layer.thickness | the unit's thickness [d] |\n";
   return out;
 }
 

@@ -54,6 +54,12 @@ struct KeySpec {
 // Every key, grouped by section, in the order the resolved copy lists them.
 const std::vector<KeySpec>& schema();
 
+// The keys of one named material, [materials.NAME] (docs/materials.md), by their short names
+// ("friction"). All are numbers; `friction` is required, friction_residual defaults to
+// friction and bond_shear_strength to bond_tensile_strength (their specs' defaults are unused).
+const std::vector<KeySpec>& material_schema();
+const KeySpec* find_material_key(std::string_view key);
+
 // Index into schema() of a dotted name, or nullopt.
 std::optional<std::size_t> find_key(std::string_view name);
 

@@ -18,22 +18,27 @@ struct ContactBlock {
   alignas(64) double dx[kContactBlock], dy[kContactBlock], ri[kContactBlock], rj[kContactBlock];
   alignas(64) double dvx[kContactBlock], dvy[kContactBlock], wi[kContactBlock], wj[kContactBlock];
   alignas(64) double gn[kContactBlock], gs[kContactBlock];
+  alignas(64) double mu[kContactBlock];  // the pair's Coulomb coefficient (contact/materials.hpp)
   // In and out: tangential history.
   alignas(64) double xi[kContactBlock];
   // Outputs.
   alignas(64) double fx[kContactBlock], fy[kContactBlock], ft[kContactBlock];
+  alignas(64) double slip[kContactBlock];  // sliding in this step (weakening; 0 off the limit)
   alignas(64) std::int64_t touching[kContactBlock];  // as wide as a double: one vector type
 };
 
 // The law for one pair, without branches (the lanes of a vector loop): force on the second
 // disc, tangential force and new history, all zero for a pair that does not touch; and, for
 // the contact output (unused values cost nothing in the loops), the normal force, the unit
-// normal from the first disc to the second, the overlap and whether the Coulomb limit held.
+// normal from the first disc to the second, the overlap and whether the Coulomb limit held;
+// and, for weakening materials, how far the contact slid on the limit in this step (the trial
+// history beyond the one the limit set; 0 when it held).
 struct ContactLane {
   double fx, fy, ft, xi;
   bool touching;
   double fn, nx, ny, delta;
   bool at_limit;
+  double slip;
 };
 
 // Second disc at (dx, dy) from the first, relative velocity (dvx, dvy), spins wi, wj; gn, gs
@@ -65,9 +70,11 @@ inline ContactLane contact_lane(double dx, double dy, double ri, double rj, doub
           nx,
           ny,
           delta,
-          touching && t.slip};
+          touching && t.slip,
+          touching && t.slip ? std::fabs(xi_old + vt * dt - t.xi) : 0.0};
 }
 
+// Every pair with the friction mu (the thesis's one material).
 template <class Normal>
 inline void contact_forces_block(ContactBlock& b, int count, double kn, double ks, double mu, double dt) {
 #pragma omp simd
@@ -75,6 +82,18 @@ inline void contact_forces_block(ContactBlock& b, int count, double kn, double k
     const ContactLane c = contact_lane<Normal>(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k],
                                                b.wj[k], b.gn[k], b.gs[k], b.xi[k], kn, ks, mu, dt);
     b.fx[k] = c.fx; b.fy[k] = c.fy; b.ft[k] = c.ft; b.xi[k] = c.xi;
+    b.touching[k] = c.touching;
+  }
+}
+
+// Each pair with its own friction b.mu[k], and its slip on the limit out (named materials).
+template <class Normal>
+inline void contact_forces_block_materials(ContactBlock& b, int count, double kn, double ks, double dt) {
+#pragma omp simd
+  for (int k = 0; k < count; ++k) {
+    const ContactLane c = contact_lane<Normal>(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k],
+                                               b.wj[k], b.gn[k], b.gs[k], b.xi[k], kn, ks, b.mu[k], dt);
+    b.fx[k] = c.fx; b.fy[k] = c.fy; b.ft[k] = c.ft; b.xi[k] = c.xi; b.slip[k] = c.slip;
     b.touching[k] = c.touching;
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "contact/contact_block.hpp"
+#include "contact/materials.hpp"
 #include "contact/normal_laws.hpp"
 
 namespace orogen {
@@ -23,11 +24,30 @@ struct PairView {
   double* __restrict xi;
 };
 
+// Where a pair's friction comes from. The thesis's one material: contact.mu for every pair,
+// and no slip is kept (the loops are those of before materials, bit for bit). Named materials:
+// the weaker of the two discs' frictions of this step (World::step_stages fills them from each
+// disc's material and slip), and the slip of each contact on the Coulomb limit added to both
+// discs (chunks of one parity share no disc: no race, and the same order for any thread count).
+struct UniformFriction {
+  static constexpr bool kTracksSlip = false;
+  double mu;
+  double pair(std::uint32_t, std::uint32_t) const { return mu; }
+  void add_slip(std::uint32_t, std::uint32_t, double) const {}
+};
+struct MaterialFriction {
+  static constexpr bool kTracksSlip = true;
+  const double* __restrict mu_disc;
+  double* __restrict slip;
+  double pair(std::uint32_t i, std::uint32_t j) const { return pair_friction(mu_disc[i], mu_disc[j]); }
+  void add_slip(std::uint32_t i, std::uint32_t j, double s) const { slip[i] += s; slip[j] += s; }
+};
+
 // Gathers the touching pairs among [p0, p0 + count) into the block (their pair numbers in
 // `pair`), zeroes the history of the others, and runs the block kernel on the touching ones.
-template <class Normal>
-int compute_block(const PairView& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t p0,
-                  int count, ContactBlock& b, std::uint32_t* pair) {
+template <class Normal, class Friction>
+int compute_block(const PairView& L, const DiscView& d, const ContactLaw& law, const Friction& friction, double dt,
+                  std::size_t p0, int count, ContactBlock& b, std::uint32_t* pair) {
   int m = 0;
   const double damping_ratio = law.tangential_damping_ratio;
   for (int k = 0; k < count; ++k) {
@@ -40,9 +60,13 @@ int compute_block(const PairView& L, const DiscView& d, const ContactLaw& law, d
     b.gn[m] = L.gamma_n[p];
     b.gs[m] = damping_ratio * b.gn[m];
     b.xi[m] = L.xi[p];
+    if constexpr (Friction::kTracksSlip) b.mu[m] = friction.pair(i, j);
     pair[m++] = static_cast<std::uint32_t>(p);
   }
-  contact_forces_block<Normal>(b, m, law.kn, law.ks, law.mu, dt);
+  if constexpr (Friction::kTracksSlip)
+    contact_forces_block_materials<Normal>(b, m, law.kn, law.ks, dt);
+  else
+    contact_forces_block<Normal>(b, m, law.kn, law.ks, law.mu, dt);
   for (int k = 0; k < m; ++k) L.xi[pair[k]] = b.xi[k];
   return m;
 }
@@ -50,18 +74,19 @@ int compute_block(const PairView& L, const DiscView& d, const ContactLaw& law, d
 // Pairs [begin, end) in pair order, added onto the discs' forces, only the touching ones
 // through the kernel: for the pairs that were apart at the list build, most still apart (so
 // the test mostly goes one way and its branch is predicted).
-template <class Normal>
-void touching_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law, double dt,
-                          std::size_t begin, std::size_t end, DiscForce* __restrict force) {
+template <class Normal, class Friction>
+void touching_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law, const Friction& friction,
+                          double dt, std::size_t begin, std::size_t end, DiscForce* __restrict force) {
   ContactBlock b;
   std::uint32_t pair[kContactBlock];
   for (std::size_t p0 = begin; p0 < end; p0 += kContactBlock) {
     const int count = static_cast<int>(std::min<std::size_t>(kContactBlock, end - p0));
-    const int m = compute_block<Normal>(L, d, law, dt, p0, count, b, pair);
+    const int m = compute_block<Normal>(L, d, law, friction, dt, p0, count, b, pair);
     for (int k = 0; k < m; ++k) {
       const auto i = L.first[pair[k]], j = L.second[pair[k]];
       force[i].fx -= b.fx[k]; force[i].fy -= b.fy[k]; force[i].torque += -b.ri[k] * b.ft[k];
       force[j].fx += b.fx[k]; force[j].fy += b.fy[k]; force[j].torque += -b.rj[k] * b.ft[k];
+      if constexpr (Friction::kTracksSlip) friction.add_slip(i, j, b.slip[k]);
     }
   }
 }
@@ -75,12 +100,12 @@ void touching_pair_forces(const PairView& L, const DiscView& d, const ContactLaw
 // torque that change no sum (the sums start at +0.0, and a sum that starts at +0.0 never
 // becomes -0.0 when rounding to nearest, so adding +0.0 or -0.0 leaves it as it is): the sums
 // are bitwise those of touching_pair_forces.
-template <class Normal>
-void all_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law, double dt, std::size_t begin,
-                     std::size_t end, DiscForce* __restrict force) {
-  alignas(64) double fx[kContactBlock], fy[kContactBlock], ft[kContactBlock];
+template <class Normal, class Friction>
+void all_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law, const Friction& friction, double dt,
+                     std::size_t begin, std::size_t end, DiscForce* __restrict force) {
+  alignas(64) double fx[kContactBlock], fy[kContactBlock], ft[kContactBlock], slip[kContactBlock];
   const double damping_ratio = law.tangential_damping_ratio;
-  const double kn = law.kn, ks = law.ks, mu = law.mu;
+  const double kn = law.kn, ks = law.ks;
   for (std::size_t p0 = begin; p0 < end; p0 += kContactBlock) {
     const int count = static_cast<int>(std::min<std::size_t>(kContactBlock, end - p0));
     const std::uint32_t* __restrict first = L.first + p0;
@@ -93,13 +118,15 @@ void all_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law
       const ContactLane c =
           contact_lane<Normal>(d.x[j] - d.x[i], d.y[j] - d.y[i], d.radius[i], d.radius[j], d.vx[j] - d.vx[i],
                                d.vy[j] - d.vy[i], d.omega[i], d.omega[j], gamma_n[k], damping_ratio * gamma_n[k],
-                               xi[k], kn, ks, mu, dt);
+                               xi[k], kn, ks, friction.pair(i, j), dt);
       fx[k] = c.fx; fy[k] = c.fy; ft[k] = c.ft; xi[k] = c.xi;
+      if constexpr (Friction::kTracksSlip) slip[k] = c.slip;
     }
     for (int k = 0; k < count; ++k) {
       const auto i = first[k], j = second[k];
       force[i].fx -= fx[k]; force[i].fy -= fy[k]; force[i].torque += -d.radius[i] * ft[k];
       force[j].fx += fx[k]; force[j].fy += fy[k]; force[j].torque += -d.radius[j] * ft[k];
+      if constexpr (Friction::kTracksSlip) friction.add_slip(i, j, slip[k]);
     }
   }
 }
@@ -109,9 +136,9 @@ constexpr double kDenseShare = 0.65;
 
 // Thread t's even chunks, then its odd ones, with the normal law Normal (one instance of the
 // loops per registered law, chosen once per step).
-template <class Normal>
-void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& d, const ContactLaw& law, double dt,
-                  DiscForce* force, const ThreadSplit& split, std::size_t t) {
+template <class Normal, class Friction>
+void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& d, const ContactLaw& law,
+                  const Friction& friction, double dt, DiscForce* force, const ThreadSplit& split, std::size_t t) {
   // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in parallel
   // without races, and every disc sums its pairs in the same order for any number of threads.
   const std::ptrdiff_t begin = split.chunk[t], end = split.chunk[t + 1];
@@ -127,8 +154,8 @@ void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& 
       // its few apart pairs from memory cost the 80k pile 6-9% (docs/performance.md).
       const double pairs_in_chunk = static_cast<double>(end_pair - begin_pair);
       if (static_cast<double>(untested_end - begin_pair) >= kDenseShare * pairs_in_chunk) untested_end = end_pair;
-      all_pair_forces<Normal>(pairs, d, law, dt, begin_pair, untested_end, force);
-      touching_pair_forces<Normal>(pairs, d, law, dt, untested_end, end_pair, force);
+      all_pair_forces<Normal>(pairs, d, law, friction, dt, begin_pair, untested_end, force);
+      touching_pair_forces<Normal>(pairs, d, law, friction, dt, untested_end, end_pair, force);
     }
 #pragma omp barrier
   }
@@ -136,13 +163,17 @@ void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& 
 
 }  // namespace
 
-void pair_forces_share(const NeighborList& L, PairContacts& contacts, const Discs& discs, const ContactLaw& law, double dt, DiscForce* force,
-                       const ThreadSplit& split, std::size_t t) {
+void pair_forces_share(const NeighborList& L, PairContacts& contacts, Discs& discs, const ContactLaw& law,
+                       const double* mu_disc, double dt, DiscForce* force, const ThreadSplit& split, std::size_t t) {
   const DiscView d{discs.x.data(), discs.y.data(), discs.vx.data(), discs.vy.data(), discs.omega.data(),
                    discs.radius.data()};
   const PairView pairs{L.first.data(), L.second.data(), contacts.gamma_n.data(), contacts.xi.data()};
   with_normal_law(law.normal_force, [&](auto normal) {
-    chunk_forces<decltype(normal)>(L, pairs, d, law, dt, force, split, t);
+    if (mu_disc == nullptr)
+      chunk_forces<decltype(normal)>(L, pairs, d, law, UniformFriction{law.mu}, dt, force, split, t);
+    else
+      chunk_forces<decltype(normal)>(L, pairs, d, law, MaterialFriction{mu_disc, discs.slip.data()}, dt, force, split,
+                                     t);
   });
 }
 

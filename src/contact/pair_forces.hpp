@@ -23,13 +23,16 @@ struct PairScratch {
   std::uint64_t split_build = ~std::uint64_t{0};  // the list build the cut was made for
 };
 
+// `mu_disc`: nullptr for the one material of contact.mu, else each disc's friction of this
+// step (named materials: a pair slides at the weaker of its two, and the slip of each contact on
+// the Coulomb limit is added to both discs' Discs::slip).
 // Sets the forces to the sum of the discs' contact forces, chunk by chunk (see
 // NeighborList::chunk_start), the chunks and discs cut between the threads of a team by `split`:
 // bitwise the same result for any number of threads and any split. Every thread t of the team
 // (World::step_stages) calls it, `forces` already sized to the discs and zero (integration
 // leaves them so); it sums its even chunks, then its odd ones, with the team's barriers
 // between (so the forces are whole when it returns).
-void pair_forces_share(const NeighborList& list, PairContacts& contacts, const Discs& discs, const ContactLaw& law, double dt, DiscForce* forces,
-                       const ThreadSplit& split, std::size_t t);
+void pair_forces_share(const NeighborList& list, PairContacts& contacts, Discs& discs, const ContactLaw& law,
+                       const double* mu_disc, double dt, DiscForce* forces, const ThreadSplit& split, std::size_t t);
 
 }  // namespace orogen

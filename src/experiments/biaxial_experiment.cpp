@@ -13,6 +13,7 @@
 #include "analysis/surface.hpp"
 #include "config/config.hpp"
 #include "experiments/series_table.hpp"
+#include "experiments/layer_units.hpp"
 #include "experiments/settled_layer.hpp"
 #include "experiments/spec_from_config.hpp"
 
@@ -52,7 +53,7 @@ void BiaxialExperiment::setup(World& w) {
   PackingSpec p = spec_.packing;
   p.length = spec_.width;
   p.thickness = spec_.height;
-  settle_layer(w, p, spec_.settle);
+  settle_layer(w, p, spec_.settle, /*apply_materials=*/false);  // materials once consolidated
   w.removals.clear();  // the trimmed excess never belonged to the sample
 
   // Gravity off; four smooth walls around the sample, long enough never to leave a gap at the
@@ -143,6 +144,10 @@ void BiaxialExperiment::start_shearing(World& w) {
   coordination_start_ = measure_contacts(w).contacts_per_disc;
   solid_fraction_start_ = solid_area(w.discs) / a0_;
   w.set_wall_velocity("top", 0, -spec_.strain_rate * h0_);  // constant speed: the strain rate is nominal (of H0)
+  // Named materials: the sample is the first (no units: the whole sample), bonded now, at the
+  // confining stress, as bonded samples are prepared (docs/materials.md, Calibration).
+  if (spec_.material >= 0) w.materials.units = {{static_cast<std::size_t>(spec_.material), spec_.height}};
+  apply_units(w, 0, w.discs.size(), spec_.packing.seed);
   output_sum_ = {};
   output_steps_ = 0;
   phase_ = Shearing;
@@ -326,6 +331,17 @@ std::unique_ptr<Experiment> make_biaxial_experiment(const Config& c) {
   s.strain_end = c.get_float("biaxial.strain_end");
   s.outputs = c.get_int32("biaxial.outputs");
   s.servo_gain = c.get_float("biaxial.servo_gain");
+  if (const std::string& name = c.get_string("biaxial.material"); !name.empty()) {
+    std::string names;
+    for (std::size_t k = 0; k < c.materials().size(); ++k) {
+      if (c.materials().list[k].name == name) s.material = static_cast<std::ptrdiff_t>(k);
+      names += (names.empty() ? "" : ", ") + c.materials().list[k].name;
+    }
+    if (s.material < 0)
+      throw config_error(c.source_of("biaxial.material"), "biaxial.material", "\"" + name + "\"",
+                         "a name of [materials] (" + (names.empty() ? std::string("none defined") : names) +
+                             "), or empty");
+  }
   read_layer_keys(c, s);
   check_material_size(c, s.width, s.height, {"biaxial.width", "biaxial.height"});
   // Quasi-static: inertial number below 1e-2 even at the lowest mean stress, sigma3, for the

@@ -24,6 +24,7 @@ struct BiaxialSpec {
   double strain_end = 0.2;         // stop at this axial strain
   int outputs = 100;               // output steps over the shearing
   double servo_gain = 1.0;         // fraction of a wall's stress error removed per step (see docs)
+  std::ptrdiff_t material = -1;    // the sample's material (index into the materials); -1: the units
   double tolerance = 0.01;         // consolidated: every wall stress within this of sigma3
   double residual_from = 2.0 / 3;  // residual state: beyond this fraction of strain_end
   PackingSpec packing;

@@ -28,7 +28,16 @@ void apply_engine_config(const Config& c, World& w) {
   w.law.tangential_damping_ratio = c.get_float("contact.tangential_damping_ratio");
   w.neighbors.skin = c.get_float("neighbor.skin");
   w.sort_every = c.get_int32("neighbor.sort_every");
+  w.materials = c.materials();  // the experiment gives its discs their materials once settled
   const ConfigTimeStep step = config_time_step(c);
+  if (step.given && step.dt > step.limit && step.k_bond > 0)
+    throw config_error(c.sources_of({"time.dt", "contact.kn", "particles.d_min"}), "time.dt",
+                       fmt::format("{}", step.dt),
+                       fmt::format("must not exceed the stability limit 0.1 * 2 pi sqrt(m_min_eff / (k_n + k_bond)) = "
+                                   "{:.6g}, where the stiffest bond of [materials] (bond_stiffness x k_n x "
+                                   "bond_radius_factor x d_max) adds k_bond = {:.6g} to {}: lower time.dt (0 computes "
+                                   "it) or a material's bond_stiffness",
+                                   step.limit, step.k_bond, c.describe({"contact.kn", "particles.d_min"})));
   if (step.given && step.dt > step.limit)
     throw config_error(c.sources_of({"time.dt", "contact.kn", "particles.d_min"}), "time.dt",
                        fmt::format("{}", step.dt),

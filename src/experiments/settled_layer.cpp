@@ -1,5 +1,6 @@
 #include "experiments/settled_layer.hpp"
 
+#include "experiments/layer_units.hpp"
 #include "util/thread_tuner.hpp"
 
 namespace orogen {
@@ -10,10 +11,11 @@ void settle_with_tuning(World& w, PackingExperiment& stage, const SettleSpec& se
       [&] { return static_cast<double>(w.discs.size()); });
 }
 
-void settle_layer(World& w, const PackingSpec& packing, const SettleSpec& settle) {
+void settle_layer(World& w, const PackingSpec& packing, const SettleSpec& settle, bool apply_materials) {
   PackingExperiment stage(packing, settle);
   stage.setup(w);
   settle_with_tuning(w, stage, settle);
+  if (apply_materials) apply_units(w, 0, w.discs.size(), packing.seed);  // named materials: units, bonds
   w.time = 0;
   w.step = 0;
 }

@@ -14,7 +14,15 @@ ConfigTimeStep config_time_step(const Config& c) {
   ConfigTimeStep t;
   const double d_min = c.get_float("particles.d_min");
   t.m_min = std::numbers::pi * 0.25 * d_min * d_min;
-  t.limit = stable_time_step(c.get_float("contact.kn"), 0.5 * t.m_min);
+  // A bond acts beside the contact: the stiffest bond a material can make (on the largest discs:
+  // width 2 lambda r) adds to k_n.
+  double k_bond = 0;
+  for (const auto& m : c.materials().list)
+    if (m.bond.bonds())
+      k_bond = std::max(k_bond, m.bond.stiffness * c.get_float("contact.kn") * m.bond.radius_factor *
+                                    c.get_float("particles.d_max"));
+  t.k_bond = k_bond;
+  t.limit = stable_time_step(c.get_float("contact.kn") + k_bond, 0.5 * t.m_min);
   const double dt = c.get_float("time.dt");
   t.given = dt > 0;
   t.dt = t.given ? dt : c.get_float("time.dt_fraction") * t.limit;

@@ -10,7 +10,8 @@ struct World;
 
 struct ConfigTimeStep {
   double m_min = 0;      // mass of the smallest disc, pi d_min^2 / 4 (unit density)
-  double limit = 0;      // 0.1 * 2 pi sqrt(m_min_eff / k_n), m_min_eff = m_min / 2
+  double k_bond = 0;     // stiffness of the stiffest bond the materials can make (0: no bonds)
+  double limit = 0;      // 0.1 * 2 pi sqrt(m_min_eff / (k_n + k_bond)), m_min_eff = m_min / 2
   double dt = 0;         // the step the run takes
   bool given = false;    // dt came from time.dt (checked against the limit), not time.dt_fraction
 };

@@ -11,6 +11,7 @@
 #include "analysis/wedge_geometry.hpp"
 #include "exhumation/in_run_analysis.hpp"
 #include "experiments/series_table.hpp"
+#include "experiments/layer_units.hpp"
 #include "experiments/settled_layer.hpp"
 
 namespace orogen {
@@ -82,7 +83,8 @@ void WedgeExperiment::build_layer(World& w) {
   window_retro_ = std::min(x_end_ + 1.0, std::max(spec_.window, spec_.initial_active) * spec_.h0);
   double left = x_end_ - L;
   while (true) {
-    stamp_tile(w, tile_, left, x_end_);  // nothing overlapping the end wall
+    const auto [first, last] = stamp_tile(w, tile_, left, x_end_);  // nothing overlapping the end wall
+    apply_units(w, first, last, spec_.packing.seed);
     if (left <= window_pro_ - slab_reserve()) break;
     left -= L;
   }
@@ -108,6 +110,7 @@ void WedgeExperiment::feed_slab(World& w) {
   slab_left_ -= tile_.length;
   const std::size_t first_cluster = w.clusters.size();
   const auto [first, last] = stamp_tile(w, tile_, slab_left_);
+  apply_units(w, first, last, spec_.packing.seed);
   w.edit_motion([&](MotionEdit& e) {
     for (auto i = first; i < last; ++i)
       if (w.discs.cluster[i] < 0) e.disc(i, Motion::Kinematic, spec_.v);

@@ -5,7 +5,7 @@
 namespace orogen {
 namespace {
 
-constexpr std::array<DatasetDoc, 15> kDocs = {{
+constexpr std::array<DatasetDoc, 17> kDocs = {{
     {"x", "d", "disc centre, horizontal coordinate"},
     {"y", "d", "disc centre, vertical coordinate (up)"},
     {"theta", "rad", "disc rotation angle, counter-clockwise"},
@@ -19,6 +19,8 @@ constexpr std::array<DatasetDoc, 15> kDocs = {{
     {"x0", "d", "disc centre at the start of the experiment, horizontal coordinate"},
     {"y0", "d", "disc centre at the start of the experiment, vertical coordinate"},
     {"depth0", "d", "depth below the settled layer's surface at the start of the experiment"},
+    {"material", "-", "index of the disc's material (a run with [materials]: the order of materials_names in the file's attributes)"},
+    {"slip", "d", "frictional slip the disc has accumulated on its contacts, which weakens its material's friction (a run with [materials])"},
     {"walls", "d", "wall segments, one row each: end points ax, ay, bx, by"},
     {"xy", "d", "disc centres as (x, y) rows: a virtual view of x and y (no copy), the XDMF sidecar's geometry"},
 }};

@@ -80,6 +80,7 @@ Snapshot SnapshotReader::read(std::int64_t k) const {
     if (name == "id") s.id = h5::read<std::int64_t>(g.id(), name);
     else if (name == "cluster_id") s.cluster_id = h5::read<std::int64_t>(g.id(), name);
     else if (name == "motion") s.motion = h5::read<std::uint8_t>(g.id(), name);
+    else if (name == "material") s.material = h5::read<std::uint8_t>(g.id(), name);
     else if (info.kind == h5::Kind::Float) s.fields[name] = h5::read<double>(g.id(), name);
   }
   const std::size_t n = s.id.size();
@@ -89,6 +90,7 @@ Snapshot SnapshotReader::read(std::int64_t k) const {
   };
   check_size("cluster_id", s.cluster_id.size());
   check_size("motion", s.motion.size());
+  if (!s.material.empty()) check_size("material", s.material.size());
   for (const auto& [name, v] : s.fields) check_size(name, v.size());
 
   const h5::Matrix w = h5::read_2d(g.id(), "walls");

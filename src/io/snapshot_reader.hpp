@@ -20,6 +20,7 @@ struct Snapshot {
   std::map<std::string, std::vector<double>> fields;  // every 1-D float dataset: x, y, ..., extras
   std::vector<std::int64_t> id, cluster_id;
   std::vector<std::uint8_t> motion;
+  std::vector<std::uint8_t> material;  // a run of named materials only (empty otherwise)
   std::vector<std::array<double, 4>> walls;
 
   std::size_t size() const { return id.size(); }

@@ -68,6 +68,13 @@ void write_group(hid_t group, const std::string& path, const SnapshotFrame& f, h
   // for_each_array is the one list of per-disc arrays; it only reads here.
   std::size_t written = 0;
   const_cast<Discs&>(*f.discs).for_each_array([&](std::string_view name, const auto& v) {
+    if (Discs::optional_array(name) && !v.empty()) {  // a world of materials: material and slip
+      if (v.size() != f.discs->size())
+        throw std::invalid_argument(fmt::format("Discs::{} has {} entries for {} discs", name, v.size(), f.discs->size()));
+      h5::write(group, std::string(name), std::span(v), storage);
+      document(group, name);
+      return;
+    }
     if (!is_disc_array(name)) return;
     if (v.size() != f.discs->size())
       throw std::invalid_argument(fmt::format("Discs::{} has {} entries for {} discs", name, v.size(), f.discs->size()));

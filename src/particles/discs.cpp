@@ -16,7 +16,14 @@ std::size_t Discs::add(std::int64_t disc_id, double px, double py, double r) {
   body_dx.push_back(0); body_dy.push_back(0);
   motion.push_back(static_cast<std::uint8_t>(Motion::Dynamic));
   x0.push_back(px); y0.push_back(py); depth0.push_back(0);
+  if (has_materials) { material.push_back(0); slip.push_back(0); }
   return x.size() - 1;
+}
+
+void Discs::enable_materials() {
+  has_materials = true;
+  material.resize(size(), 0);
+  slip.resize(size(), 0.0);
 }
 
 void Discs::permute(std::span<const std::uint32_t> order) { permute_arrays(*this, order); }

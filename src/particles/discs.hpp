@@ -30,8 +30,18 @@ struct Discs {
   std::vector<std::uint8_t> motion;
   // Initial position after settling and initial depth below the settled surface.
   std::vector<double> x0, y0, depth0;
+  // Only in a world of named materials (contact/materials.hpp; empty otherwise, and then in
+  // no checkpoint or snapshot): the index of the disc's material and the frictional slip it
+  // has accumulated on its contacts, which weakens its friction.
+  std::vector<std::uint8_t> material;
+  std::vector<double> slip;
+  bool has_materials = false;  // whether add() gives new discs a material (index 0) and slip
 
   std::size_t size() const { return x.size(); }
+  // The arrays above that only a world of materials has.
+  static bool optional_array(std::string_view name) { return name == "material" || name == "slip"; }
+  // Gives every disc material 0 and no slip, and new discs the same (World::set_materials).
+  void enable_materials();
 
   // Calls f(name, vector&) for every per-disc array, in a fixed order. Re-ordering,
   // compaction, checkpoints and snapshots all go through this one list.
@@ -42,6 +52,7 @@ struct Discs {
     f("id", id); f("cluster_id", cluster_id); f("cluster", cluster);
     f("body_dx", body_dx); f("body_dy", body_dy); f("motion", motion);
     f("x0", x0); f("y0", y0); f("depth0", depth0);
+    f("material", material); f("slip", slip);
   }
 
   // Appends a free, dynamic disc at rest and returns its index.

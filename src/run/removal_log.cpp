@@ -48,7 +48,10 @@ std::string removal_log_difference(const std::filesystem::path& path, const std:
     const auto [end, ec] = std::from_chars(line.data(), line.data() + line.size(), step);
     if (ec != std::errc() || end == line.data() + line.size() || *end != ',')
       return fmt::format("line {} is not a row of removals ({})", number, line);
-    if (step > through_step) break;
+    // The checkpoint's removals are the file's first rows (a set-up's trimming among them, at
+    // steps of the set-up's own clock, which may be later than the checkpoint's step); a later
+    // row is one made after the checkpoint, unless its step says otherwise.
+    if (next >= removals.size() && step > through_step) break;
     if (next >= removals.size() || line != removal_row(removals[next]))
       return fmt::format("line {} ({}) is not the checkpoint's removal {} ({})", number, line, next,
                          next < removals.size() ? removal_row(removals[next]) : "none");

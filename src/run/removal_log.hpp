@@ -15,9 +15,10 @@ void write_removal_log(const std::filesystem::path& path, const std::vector<Remo
                        std::uint64_t through_step);
 
 // The first row of the removals file at `path` that disagrees with `removals` (a checkpoint's
-// list) among the rows up to `through_step`, described for a message; "" when they agree or
-// there is no file. Rows after `through_step` were written after that checkpoint and are not
-// compared. A resume refuses a folder whose file is of another run.
+// list), described for a message; "" when they agree or there is no file. The checkpoint's
+// removals must be the file's first rows; rows after them with steps after `through_step` were
+// written after that checkpoint and are not compared. A resume refuses a folder whose file is
+// of another run.
 std::string removal_log_difference(const std::filesystem::path& path, const std::vector<RemovalRecord>& removals,
                                    std::uint64_t through_step);
 

@@ -12,10 +12,10 @@ namespace orogen {
 namespace {
 
 // Everything a run writes into its folder besides config.toml and run.lock.
-constexpr std::array<const char*, 13> kRunOutputs = {"checkpoint.bin", "snapshots.h5", "snapshots",    "series.csv",
-                                                     "removals.csv",   "summary.csv",  "run.pvd",      "vtp",
-                                                     "packing.h5",     "profile.csv",  "run.log",      "snapshots.xmf",
-                                                     "packing.xmf"};
+constexpr std::array<const char*, 14> kRunOutputs = {"checkpoint.bin", "snapshots.h5",    "snapshots",    "series.csv",
+                                                     "removals.csv",   "bond_breaks.csv", "summary.csv",  "run.pvd",
+                                                     "vtp",            "packing.h5",      "profile.csv",  "run.log",
+                                                     "snapshots.xmf",  "packing.xmf"};
 
 bool is_run_folder(const fs::path& dir) {
   std::error_code ec;

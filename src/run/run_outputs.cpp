@@ -6,6 +6,7 @@
 
 #include "io/vtp_writer.hpp"
 #include "run/kept_files.hpp"
+#include "run/bond_break_log.hpp"
 #include "run/removal_log.hpp"
 #include "world/world_archive.hpp"
 
@@ -23,6 +24,11 @@ SnapshotMetadata Run::metadata() const {
   m.strings["run_identity"] = identity_;
   m.strings[kConfigAttr] = config_.to_toml();
   if (!branch_from_.empty()) m.strings["branch_from"] = branch_from_;
+  if (!world_.materials.empty()) {  // the names of the `material` dataset's indices, one per line
+    std::string names;
+    for (const auto& material : world_.materials.list) names += material.name + "\n";
+    m.strings["materials_names"] = names;
+  }
   return m;
 }
 
@@ -58,6 +64,8 @@ void Run::output() {
   state_.vtp_digests.push_back(write_vtp_ ? write_vtp(dir_ / vtp_file_name(state_.outputs), frame) : 0);
   series_->add_row(exp_->measure(world_));
   write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
+  if (world_.materials.any_bonds())
+    write_bond_break_log(dir_ / "bond_breaks.csv", world_.bonds.breaks, world_.bonds.size(), world_.step);
   state_.output_times.push_back(world_.time);
   ++state_.outputs;
   last_output_step_ = world_.step;

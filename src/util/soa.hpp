@@ -22,6 +22,7 @@ void compact_arrays(SoA& soa, std::span<const std::uint8_t> keep) {
 template <class SoA>
 void permute_arrays(SoA& soa, std::span<const std::uint32_t> order) {
   soa.for_each_array([&](std::string_view, auto& v) {
+    if (v.empty()) return;  // an optional array the SoA does not use (Discs::optional_array)
     std::remove_reference_t<decltype(v)> out(order.size());
     for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[order[k]];
     v.swap(out);

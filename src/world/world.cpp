@@ -93,6 +93,16 @@ void World::step_stages(const ThreadSplit* given) {
   const bool after_forces = !hooks.empty(Stage::AfterForces);
   std::exception_ptr hook_error;
   ThreadSplit fallback;
+  // Named materials: each disc's friction from its material and its slip (contact/materials.hpp).
+  const double* mu_disc = nullptr;
+  if (discs.has_materials) {
+    disc_friction.resize(discs.size());
+    for (std::size_t i = 0; i < discs.size(); ++i)
+      disc_friction[i] = materials.list[discs.material[i]].friction_at(discs.slip[i]);
+    mu_disc = disc_friction.data();
+  }
+  if (!bonds.id_a.empty()) prepare_bond_scratch(bonds, discs, neighbors.builds, bond_scratch);
+  const std::size_t bond_count = bonds.id_a.empty() ? 0 : bond_scratch.acting;
   // One thread team for all three stages (a team per stage cost a fork and a join each), each
   // thread on its own stretch of the domain.
 #pragma omp parallel num_threads(threads) reduction(max : max2) reduction(+ : not_finite) if (threads > 1)
@@ -105,11 +115,19 @@ void World::step_stages(const ThreadSplit* given) {
     }
     const ThreadSplit& split = whole_team ? cut : fallback;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    pair_forces_share(neighbors, contacts.pairs, discs, law, dt, forces, split, t);
+    pair_forces_share(neighbors, contacts.pairs, discs, law, mu_disc, dt, forces, split, t);
     wall_forces_share(contacts.walls, discs, walls, law, dt, forces, split, t);
     // A body's members may lie in the next thread's stretch: their forces must be whole before
     // it gathers them, and their wall contacts read before it moves them.
 #pragma omp barrier
+    if (bond_count > 0) {
+      // Each thread its stretch of bonds, then one thread adds them in bond order.
+      const auto team = static_cast<std::size_t>(omp_get_num_threads());
+      bond_forces_range(bonds, discs, dt, bond_scratch, bond_count * t / team, bond_count * (t + 1) / team);
+#pragma omp barrier
+#pragma omp single
+      apply_bond_forces(bonds, discs, bond_scratch, forces, step, time);
+    }
     if (after_forces) {
 #pragma omp single
       {
@@ -147,7 +165,13 @@ const ThreadSplit& World::thread_cut(int threads) {
 bool World::contacts_stale() const { return orogen::contacts_stale(neighbors, discs, walls, moved); }
 
 BuildStats World::rebuild_contacts(bool sort) {
-  return orogen::rebuild_contacts(neighbors, contacts, discs, clusters, walls, law, dt, sort);
+  const BuildStats stats = orogen::rebuild_contacts(neighbors, contacts, discs, clusters, walls, law, dt, sort);
+  if (!bonds.id_a.empty()) {  // the build may have re-ordered the discs, a removal compacted them
+    std::vector<std::int64_t> index_of_id(static_cast<std::size_t>(next_disc_id), -1);
+    for (std::size_t i = 0; i < discs.size(); ++i) index_of_id[static_cast<std::size_t>(discs.id[i])] = static_cast<std::int64_t>(i);
+    remap_bonds(bonds, index_of_id);
+  }
+  return stats;
 }
 
 std::size_t World::remove(std::span<const std::uint8_t> flags, RemovalReason reason) {
@@ -209,7 +233,11 @@ double stable_time_step(double kn, double min_pair_mass) {
   return 0.1 * 2.0 * std::numbers::pi * std::sqrt(min_pair_mass / kn);
 }
 
-double World::stable_dt() const { return stable_time_step(law.kn, min_pair_mass()); }
+double World::stable_dt() const {
+  double k_bond = 0;  // a bond acts beside the contact: their stiffnesses add
+  for (std::size_t k = 0; k < bonds.size(); ++k) k_bond = std::max(k_bond, bonds.kn[k] * 2 * bonds.radius[k]);
+  return stable_time_step(law.kn + k_bond, min_pair_mass());
+}
 
 double World::kinetic_energy() const {
   double e = 0;

@@ -17,7 +17,9 @@
 #include <vector>
 
 #include "boundary/wall.hpp"
+#include "contact/bonds.hpp"
 #include "contact/contact_law.hpp"
+#include "contact/materials.hpp"
 #include "contact/contact_store.hpp"
 #include "contact/neighbor_list.hpp"
 #include "contact/pair_forces.hpp"
@@ -57,7 +59,11 @@ struct World {
   BodyForce body;
   NeighborList neighbors;  // candidate pairs and the rebuild test
   ContactStore contacts;   // the state of each contact (histories, dashpots, wall flags)
+  MaterialTable materials;  // named materials (empty: contact.mu everywhere); set_materials
+  Bonds bonds;              // cohesive bonds between discs (contact/bonds.hpp), their breakage log
   PairScratch scratch;
+  BondScratch bond_scratch;
+  std::vector<double> disc_friction;  // each disc's friction in this step (a world of materials)
   double moved = 0;  // largest disc displacement since the last list build (from integration)
   double dt = 1e-3;
   double time = 0;
@@ -109,8 +115,25 @@ struct World {
   // Coulomb coefficient of disc-disc contacts: every force pass reads it, nothing holds a copy.
   void set_friction(double mu) { law.mu = mu; }
   double friction() const { return law.mu; }
+  // The Coulomb coefficient the next step gives the contact of discs i and j: contact.mu, or in
+  // a world of materials the weaker of the two discs' weakened frictions.
+  double contact_friction(std::size_t i, std::size_t j) const {
+    if (!discs.has_materials) return law.mu;
+    return pair_friction(materials.list[discs.material[i]].friction_at(discs.slip[i]),
+                         materials.list[discs.material[j]].friction_at(discs.slip[j]));
+  }
   // The whole law: the list holds each contact's dashpot, set from the law at its build.
   void set_contact_law(const ContactLaw& l);
+  // Gives every disc there and every disc added later material 0 and no slip, until set
+  // otherwise (Discs::material): friction then comes from `materials`, not law.mu. Experiments
+  // call it once their layer is settled (the packing settles as the thesis's, with settle.mu).
+  void enable_materials() { discs.enable_materials(); }
+  // Bonds every pair of discs within their materials' bond gap whose materials both make bonds,
+  // at least one of the two among the discs [first, last) and not already bonded, the two in
+  // different bodies (world/bond_making.cpp). Strengths are scattered by a generator seeded with
+  // `seed` and the two discs' ids, so the bonds do not depend on the order they are made in.
+  // Returns the number of bonds made.
+  std::size_t make_bonds(std::size_t first, std::size_t last, std::uint64_t seed);
 
   // Replaces the walls (wall contacts are listed by wall index: the list is rebuilt).
   void set_walls(std::vector<Wall> w);
@@ -157,7 +180,8 @@ struct World {
 
   // Smallest effective mass of a contact pair, for the stability limit (infinite without discs).
   double min_pair_mass() const;
-  // Largest stable time step for the current stiffness and masses (MODEL §3, §2.7).
+  // Largest stable time step for the current stiffness and masses (MODEL §3, §2.7), the
+  // stiffest bond's stiffness added to the contact's.
   double stable_dt() const;
   // Kinetic energy (translational and rotational) of dynamic free discs and clusters.
   double kinetic_energy() const;

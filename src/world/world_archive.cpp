@@ -24,10 +24,48 @@ void for_each_contact_array(NeighborList& L, ContactStore& s, F&& f) {
   f("wall_bx_ref", L.wall_bx_ref); f("wall_by_ref", L.wall_by_ref);
 }
 
+// The bonds and their breakage log: only in a world of materials, so that other checkpoints
+// stay as they were.
+void bond_break_fields(ArchiveWriter* out, const ArchiveReader* in, std::vector<BondBreak>& breaks) {
+  std::vector<std::uint64_t> step;
+  std::vector<double> time, x, y;
+  std::vector<std::int64_t> a, b;
+  std::vector<std::uint8_t> mode;
+  if (out) {
+    for (const auto& r : breaks) {
+      step.push_back(r.step); time.push_back(r.time); a.push_back(r.id_a); b.push_back(r.id_b);
+      x.push_back(r.x); y.push_back(r.y); mode.push_back(static_cast<std::uint8_t>(r.mode));
+    }
+    out->put("bond_breaks.step", step); out->put("bond_breaks.time", time); out->put("bond_breaks.id_a", a);
+    out->put("bond_breaks.id_b", b); out->put("bond_breaks.x", x); out->put("bond_breaks.y", y);
+    out->put("bond_breaks.mode", mode);
+    return;
+  }
+  in->get("bond_breaks.step", step); in->get("bond_breaks.time", time); in->get("bond_breaks.id_a", a);
+  in->get("bond_breaks.id_b", b); in->get("bond_breaks.x", x); in->get("bond_breaks.y", y);
+  in->get("bond_breaks.mode", mode);
+  breaks.clear();
+  for (std::size_t k = 0; k < step.size(); ++k)
+    breaks.push_back({step[k], time[k], a[k], b[k], x[k], y[k], static_cast<BondBreakMode>(mode[k])});
+}
+
+void save_bonds(ArchiveWriter& out, Bonds& bonds) {
+  bonds.for_each_array([&](std::string_view name, auto& v) { out.put(key("bonds", name), v); });
+  bond_break_fields(&out, nullptr, bonds.breaks);
+}
+
+void load_bonds(const ArchiveReader& in, Bonds& bonds) {
+  bonds.for_each_array([&](std::string_view name, auto& v) { in.get(key("bonds", name), v); });
+  bond_break_fields(nullptr, &in, bonds.breaks);
+}
+
 }  // namespace
 
 void save_world(ArchiveWriter& out, World& w) {
-  w.discs.for_each_array([&](std::string_view name, auto& v) { out.put(key("discs", name), v); });
+  // The arrays of a world of materials only when it is one: other checkpoints stay as they were.
+  w.discs.for_each_array([&](std::string_view name, auto& v) {
+    if (!Discs::optional_array(name) || w.discs.has_materials) out.put(key("discs", name), v);
+  });
   w.clusters.for_each_array([&](std::string_view name, auto& v) { out.put(key("clusters", name), v); });
   std::vector<double> wall_geometry;
   std::vector<std::uint8_t> wall_flags;
@@ -72,10 +110,15 @@ void save_world(ArchiveWriter& out, World& w) {
   out.put("removals.x", r_x); out.put("removals.y", r_y);
   out.put("removals.id", r_id); out.put("removals.cluster_id", r_cluster);
   out.put("removals.reason", r_reason);
+  if (w.discs.has_materials) save_bonds(out, w.bonds);
 }
 
 void load_world(const ArchiveReader& in, World& w) {
-  w.discs.for_each_array([&](std::string_view name, auto& v) { in.get(key("discs", name), v); });
+  w.discs.has_materials = in.has("discs.material");
+  w.discs.for_each_array([&](std::string_view name, auto& v) {
+    if (!Discs::optional_array(name) || w.discs.has_materials) in.get(key("discs", name), v);
+    else v.clear();
+  });
   w.clusters.for_each_array([&](std::string_view name, auto& v) { in.get(key("clusters", name), v); });
   std::vector<double> g;
   std::vector<std::uint8_t> flags;
@@ -126,6 +169,8 @@ void load_world(const ArchiveReader& in, World& w) {
   for (std::size_t k = 0; k < r_step.size(); ++k)
     w.removals.push_back({r_step[k], r_time[k], r_id[k], r_cluster[k], r_x[k], r_y[k],
                           static_cast<RemovalReason>(r_reason[k])});
+  w.bonds = Bonds{};
+  if (in.has("bonds.id_a")) load_bonds(in, w.bonds);
 }
 
 }  // namespace orogen

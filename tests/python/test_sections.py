@@ -91,6 +91,19 @@ class HorizonColours(unittest.TestCase):
         for colours in (pro, retro):
             self.assertGreater(abs(luma(colours[0]) - luma(colours[1])), 0.3)
 
+    def test_materials_have_hues_of_their_own_in_the_same_bands(self):
+        band = 0.2
+        depth = np.tile((np.arange(5) + 0.5) * band, 2)
+        material = np.repeat([0, 1], 5)
+        colours = sections.material_colours(depth, material, band)
+        red = np.array(sections.matplotlib.colors.to_rgba(sections.MARKER_COLOUR))
+        np.testing.assert_array_equal(colours[2], red)  # the marker bed in either material
+        np.testing.assert_array_equal(colours[7], red)
+        self.assertFalse(np.array_equal(colours[0], colours[1]))  # light, dark
+        self.assertFalse(np.array_equal(colours[0], colours[5]))  # material 0 against 1
+        np.testing.assert_array_equal(colours[0], sections.matplotlib.colors.to_rgba(sections.MATERIAL_COLOURS[0][0]))
+        np.testing.assert_array_equal(colours[6], sections.matplotlib.colors.to_rgba(sections.MATERIAL_COLOURS[1][1]))
+
     def test_round_up(self):
         self.assertEqual([sections.round_up(v) for v in (0.13, 0.2, 0.51, 7.0)], [0.2, 0.2, 1.0, 10.0])
 

@@ -21,10 +21,14 @@ one scale of each kind, so that their frames line up. Writes into each RUN (each
 What a reader sees:
 - **Horizons**: bands of initial depth h0/5 thick (--band), alternating dark and light; the
   middle band of the layer is a red marker bed. Material that started on the pro side
-  (x0 < 0) is blue, retro-side material brown, both at full contrast.
+  (x0 < 0) is blue, retro-side material brown, both at full contrast. A run of named materials
+  (docs/materials.md) colours each material its own hue instead, in the same bands, with
+  the materials' names as the key.
 - **Faults**: the incremental maximum shear strain of each disc since the previous output
   (below), from white through orange to black on one scale for the whole run (the 99.5th
   percentile of every output's strain, or --strain-max to share one scale across runs).
+  Where `python3 -m orogen.analysis.faults RUN` has written RUN/faults.csv, the faults it
+  picked are drawn on each frame: forethrusts cyan, backthrusts green, dashed when inactive.
 - **Vectors**: each disc's displacement over the last three outputs (the snapshots' disp3_x,
   disp3_y) relative to the S-point, one arrow per cell of h0/4, darker where it moved further,
   on a scale fixed over the run (thesis Fig 5.11).
@@ -60,6 +64,8 @@ from matplotlib.colors import ListedColormap, Normalize  # noqa: E402
 
 from ..atomic import save_figure, write_text  # noqa: E402
 from ..frames import Snapshots  # noqa: E402
+from ..tables import read_rows  # noqa: E402
+from ..analysis.strain import shear_strain  # noqa: E402,F401  (sections.shear_strain: the tests' name)
 from .animation import animate  # noqa: E402
 
 KINDS = ("horizons", "faults", "vectors")
@@ -72,11 +78,12 @@ FORMATS = ("png", "pdf", "svg")
 PRO_COLOURS = ("#c9dcef", "#24548a")
 RETRO_COLOURS = ("#f1dfb6", "#8a5526")
 MARKER_COLOUR = "#c8102e"
+# A run of named materials (docs/materials.md): (light, dark) per material, in material order.
+MATERIAL_COLOURS = (("#f3e3a1", "#b8952b"), ("#c9dcef", "#24548a"), ("#d5e8c4", "#4d7a2a"),
+                    ("#e7d1ea", "#7b3f86"), ("#f6cfb5", "#a9552a"), ("#d9d9d9", "#555555"))
 MISSING_COLOUR = "#9a9a9a"
 BANDS_PER_LAYER = 5          # default band thickness h0 / 5
 MARKER_BAND = 2              # the middle of the five bands of the layer
-STRAIN_NEIGHBOURS_H0 = 0.2   # neighbours for the local deformation gradient: within 0.2 h0,
-STRAIN_NEIGHBOURS_MIN_D = 1.5  # and at least 1.5 d (the second shell of discs)
 STRAIN_PERCENTILE = 99.5
 CROP_RISE = 0.25             # h0 above the layer's surface: a disc higher than this is wedge
 CROP_MARGIN = 3.0            # h0 beyond the wedge on each side
@@ -111,7 +118,7 @@ def read_outputs(run):
 
 
 def _read_outputs(path, run):
-    fields = ("x", "y", "radius", "id", "depth0", "x0", "disp3_x", "disp3_y")
+    fields = ("x", "y", "radius", "id", "depth0", "x0", "disp3_x", "disp3_y", "material")
     outputs = []
     with Snapshots(path) as snaps:
         h0 = float(snaps.attrs.get("h0", 0.0))
@@ -130,6 +137,9 @@ def _read_outputs(path, run):
             o["id"] = f["id"]
             for name in ("disp3_x", "disp3_y"):
                 o[name] = f[name] / h0 if name in f else np.full(len(f["x"]), np.nan)
+            if "material" in f:  # a run of named materials: their names, in index order
+                o["material"] = f["material"].astype(np.int64)
+                o["materials"] = [n for n in str(snaps.attrs.get("materials_names", "")).split("\n") if n]
             o["walls"] = f["walls"] / h0
             o["S"] = float(f["attrs"].get("S", np.nan))
             o["output"] = f["output"]
@@ -193,61 +203,65 @@ def horizon_colours(depth0, x0, band=1.0 / BANDS_PER_LAYER):
     return rgba
 
 
+def material_colours(depth0, material, band=1.0 / BANDS_PER_LAYER):
+    """RGBA per disc of a run of named materials: each material its hue (MATERIAL_COLOURS, in
+    material order), in bands of initial depth `band` thick alternating light and dark; the
+    band MARKER_BAND red, as in horizon_colours."""
+    rgba = np.empty((len(depth0), 4))
+    index = np.floor(np.where(np.isfinite(depth0), depth0, 0) / band).astype(np.int64)
+    dark = index % 2 == 1
+    for m in np.unique(material):
+        colours = MATERIAL_COLOURS[int(m) % len(MATERIAL_COLOURS)]
+        for shade, colour in enumerate(colours):
+            rgba[(material == m) & (dark == bool(shade))] = matplotlib.colors.to_rgba(colour)
+    rgba[index % BANDS_PER_LAYER == MARKER_BAND] = matplotlib.colors.to_rgba(MARKER_COLOUR)
+    rgba[~np.isfinite(depth0)] = matplotlib.colors.to_rgba(MISSING_COLOUR)
+    return rgba
+
+
+def material_legend(cax, names):
+    """The materials' key in the colour bar's place: one cell per material, light and dark."""
+    cells = np.zeros((len(names), 2, 4))
+    for k in range(len(names)):
+        for c in range(2):
+            cells[k, c] = matplotlib.colors.to_rgba(MATERIAL_COLOURS[k % len(MATERIAL_COLOURS)][c])
+    cax.imshow(cells, aspect="auto", extent=(0, 2, len(names), 0), interpolation="nearest")
+    cax.set_xticks([])
+    cax.set_yticks([k + 0.5 for k in range(len(names))], names, fontsize=8)
+    cax.yaxis.tick_right()
+    cax.yaxis.set_label_position("right")
+    cax.set_ylabel("material")
+
+
 # --------------------------------------------------------------------------------------------
 # Faults: incremental shear strain
 
 
-def shear_strain(before, after, radius=None):
-    """The incremental maximum shear strain of each disc of `after` since `before` (module
-    docstring); NaN for discs not in `before` or with fewer than two neighbours."""
-    from scipy.spatial import cKDTree
+def attach_fault_picks(run, outputs):
+    """The faults that orogen.analysis.faults picked (RUN/faults.csv, when there is one) onto
+    the outputs they belong to, as o["faults"]: ((x_top, y_top), (x_bottom, y_bottom), kind,
+    active) in h0."""
+    path = os.path.join(run, "faults.csv")
+    if not os.path.isfile(path):
+        return
+    rows, _ = read_rows(path)
+    by_output = {}
+    for r in rows:
+        try:
+            seg = ((float(r["x_top"]), float(r["y_top"])), (float(r["x_bottom"]), float(r["y_bottom"])))
+            by_output.setdefault(int(r["output"]), []).append((*seg, r["kind"], r["active"] == "1"))
+        except (KeyError, ValueError):
+            continue  # a row cut by a kill: the file is rewritten whole by the next analysis
+    for o in outputs:
+        o["faults"] = by_output.get(o["output"], [])
 
-    if radius is None:  # in h0, as the positions
-        radius = max(STRAIN_NEIGHBOURS_H0, STRAIN_NEIGHBOURS_MIN_D / after["h0"])
-    n = len(after["x"])
-    strain = np.full(n, np.nan)
-    order = np.argsort(before["id"])
-    pos = np.searchsorted(before["id"], after["id"], sorter=order)
-    pos = np.clip(pos, 0, len(order) - 1)
-    prev = order[pos]
-    known = before["id"][prev] == after["id"]
-    idx = np.flatnonzero(known)
-    if idx.size < 3:
-        return strain
-    X = np.column_stack([before["x"][prev[idx]], before["y"][prev[idx]]])
-    x = np.column_stack([after["x"][idx], after["y"][idx]])
-    pairs = cKDTree(X).query_pairs(radius, output_type="ndarray")
-    if len(pairs) == 0:
-        return strain
-    i, j = pairs[:, 0], pairs[:, 1]
-    d0 = X[j] - X[i]
-    d1 = x[j] - x[i]
-    m = len(idx)
 
-    def summed(a, b):  # sum over each disc's pairs of a b^T (the pair counts for both discs)
-        out = np.zeros((m, 2, 2))
-        for r in range(2):
-            for c in range(2):
-                w = a[:, r] * b[:, c]
-                out[:, r, c] = np.bincount(i, w, m) + np.bincount(j, w, m)
-        return out
-
-    V = summed(d0, d0)
-    W = summed(d1, d0)
-    count = np.bincount(i, minlength=m) + np.bincount(j, minlength=m)
-    det = V[:, 0, 0] * V[:, 1, 1] - V[:, 0, 1] * V[:, 1, 0]
-    ok = (count >= 2) & (det > 1e-12 * np.maximum(V[:, 0, 0] * V[:, 1, 1], 1e-300))
-    Vinv = np.zeros_like(V)
-    Vinv[ok, 0, 0] = V[ok, 1, 1] / det[ok]
-    Vinv[ok, 1, 1] = V[ok, 0, 0] / det[ok]
-    Vinv[ok, 0, 1] = -V[ok, 0, 1] / det[ok]
-    Vinv[ok, 1, 0] = -V[ok, 1, 0] / det[ok]
-    F = W @ Vinv
-    C = np.transpose(F, (0, 2, 1)) @ F
-    exx, eyy, exy = (C[:, 0, 0] - 1) / 2, (C[:, 1, 1] - 1) / 2, C[:, 0, 1] / 2
-    eta = np.sqrt(((exx - eyy) / 2) ** 2 + exy ** 2)
-    strain[idx[ok]] = eta[ok]
-    return strain
+def draw_fault_picks(ax, o):
+    """The picked faults on a fault frame: forethrusts cyan, backthrusts green, dashed when
+    inactive."""
+    for top, bottom, kind, active in o.get("faults", []):
+        ax.plot([top[0], bottom[0]], [top[1], bottom[1]], color="#00b8d4" if kind == "forethrust" else "#2e9e3e",
+                lw=2.2, ls="-" if active else "--", solid_capstyle="round")
 
 
 def run_strains(outputs):
@@ -340,7 +354,12 @@ def draw(kind, o, view, scale, value, band, width_px):
     o, value = in_view(o, view, value)
     fig, ax, cax = figure_for(view, width_px)
     title = "S = %.2f   output %d" % (o["S"], o["output"])
-    if kind == "horizons":
+    if kind == "horizons" and "material" in o:
+        draw_discs(ax, o, material_colours(o["depth0"], o["material"], band))
+        names = o["materials"] or ["material %d" % m for m in range(int(o["material"].max(initial=0)) + 1)]
+        material_legend(cax, names)
+        title += "   materials, in horizon bands of %.2g h0 initial depth" % band
+    elif kind == "horizons":
         draw_discs(ax, o, horizon_colours(o["depth0"], o["x0"], band))
         legend_bar(cax, band)
         title += "   horizons: initial depth, bands of %.2g h0; blue pro-side, brown retro-side material" % band
@@ -353,6 +372,9 @@ def draw(kind, o, view, scale, value, band, width_px):
         fig.colorbar(matplotlib.cm.ScalarMappable(norm, cmap), cax=cax, extend="max",
                      label="shear strain since the previous output")
         title += "   faults: incremental maximum shear strain (scale fixed over the run)"
+        if o.get("faults"):
+            draw_fault_picks(ax, o)
+            title += "; picked: forethrusts cyan, backthrusts green"
         if not np.isfinite(value).any():
             title += "; the first output: no strain yet"
     else:
@@ -432,6 +454,8 @@ def make_sections(runs, kinds=("horizons", "faults"), every=1, stills=(-1,), for
     line up. Returns the summary written to each RUN/sections/sections.json."""
     runs = [runs] if isinstance(runs, str) else list(runs)
     outputs = {run: read_outputs(run) for run in runs}
+    for run in runs:
+        attach_fault_picks(run, outputs[run])
     every_output = [o for run in runs for o in outputs[run]]
     view = run_view(every_output, exaggeration)
     strains = {run: run_strains(outputs[run]) for run in runs} if "faults" in kinds else {}

@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""The cohesion series' table (docs/cohesion-evidence.md): for each run of a sweep over a bond
+strength, the wedge at its end (height, tapers), its faults over the last quarter of the run
+(orogen.analysis.faults: run it first in each run), and its bonds.
+
+    python3 -m orogen.analysis.faults RUN      (each run of the sweep)
+    scripts/cohesion_table.py runs/cohesion    (a Markdown table on standard output)
+"""
+
+import glob
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from orogen.tables import read_rows, read_summary, read_table  # noqa: E402
+
+
+def strength_of(run):
+    name = os.path.basename(run.rstrip("/"))
+    return float(name.split("=")[-1])
+
+
+def row(run):
+    cols, _ = read_table(os.path.join(run, "series.csv"))
+    last = -1
+    s_end = cols["S"][last]
+    late = cols["S"] >= 0.75 * s_end
+    faults, _ = read_rows(os.path.join(run, "faults.csv"))
+    late_faults = [f for f in faults if float(f["S"]) >= 0.75 * s_end and f["side"] == "pro"]
+    outputs = {f["output"] for f in faults if float(f["S"]) >= 0.75 * s_end}
+    n_out = max(1, len({int(o) for o in outputs}))
+    fore = [f for f in late_faults if f["kind"] == "forethrust"]
+    back = [f for f in late_faults if f["kind"] == "backthrust"]
+    spacing = [float(f["spacing"]) for f in fore if f["spacing"] not in ("", "nan")]
+    spacing = [v for v in spacing if math.isfinite(v)]
+    breaks = intact = 0
+    path = os.path.join(run, "bond_breaks.csv")
+    if os.path.isfile(path):
+        with open(path) as fh:
+            for line in fh:
+                if line.startswith("# intact:"):
+                    intact = int(line.split()[2])
+                elif line.endswith(",tension\n") or line.endswith(",shear\n"):
+                    breaks += 1
+    return {"strength": strength_of(run), "H": cols["H"][last], "alpha": float(np.nanmean(cols["alpha_fit"][late])),
+            "beta": float(np.nanmean(cols["beta_fit"][late])), "Dp": cols["Dp"][last],
+            "fore": len(fore) / n_out, "back": len(back) / n_out,
+            "fore_dip": float(np.mean([float(f["dip_deg"]) for f in fore])) if fore else math.nan,
+            "back_dip": float(np.mean([float(f["dip_deg"]) for f in back])) if back else math.nan,
+            "spacing": float(np.median(spacing)) if spacing else math.nan, "breaks": breaks, "intact": intact}
+
+
+def main(sweep):
+    runs = sorted(glob.glob(os.path.join(sweep, "runs", "*")), key=strength_of)
+    print("| bond strength [rho g d] | H [h0] | pro taper alpha_fit [deg] | retro taper beta_fit [deg] | Dp [h0] "
+          "| pro forethrusts per output | pro backthrusts per output | forethrust dip [deg] | backthrust dip [deg] "
+          "| forethrust spacing [h0] | bonds broken / made |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for run in runs:
+        r = row(run)
+        made = r["breaks"] + r["intact"]
+        print("| %g | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.0f | %.0f | %.2f | %s |" % (
+            r["strength"], r["H"], r["alpha"], r["beta"], r["Dp"], r["fore"], r["back"], r["fore_dip"],
+            r["back_dip"], r["spacing"], "%d / %d" % (r["breaks"], made) if made else "no bonds"))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])

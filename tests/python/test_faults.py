@@ -1,0 +1,95 @@
+"""Tests of orogen.analysis.faults (docs/materials.md, Fault picking): on a synthetic strain
+field with a forethrust and a backthrust of known dips in a weak background, the picker finds
+those two, of the right kind, dip and place along the base, and nothing else; spacing along the
+base; bad input named.
+
+Run from the repository root:  /usr/bin/python3 -m unittest tests/python/test_faults.py
+"""
+
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from source_tree import module_command  # noqa: E402
+from orogen.analysis import faults  # noqa: E402
+
+
+def wedge_lattice(d=0.1):
+    """Disc centres (h0) of a layer 1 h0 thick from x = -7 to 5 with a wedge 1.6 h0 high between
+    x = -3.5 and 1, on a triangular lattice of spacing d."""
+    xs, ys = [], []
+    for row in range(int(1.7 / (d * math.sqrt(3) / 2))):
+        y = row * d * math.sqrt(3) / 2 + d / 2
+        for x in np.arange(-7 + (row % 2) * d / 2, 5, d):
+            if y <= 1.0 or (-3.5 <= x <= 1.0 and y <= 1.6):
+                xs.append(x)
+                ys.append(y)
+    return np.array(xs), np.array(ys)
+
+
+def band_strain(x, y, x_base, dip_deg, deepens_to_plus_x, top, width=0.12, value=1.0):
+    """Strain `value` within `width` of the line through (x_base, 0) at the dip, up to height `top`."""
+    slope = math.tan(math.radians(dip_deg)) * (-1 if deepens_to_plus_x else 1)
+    # the line: y = slope (x - x_base); distance of each disc from it
+    dist = np.abs(slope * (x - x_base) - y) / math.hypot(slope, 1)
+    return np.where((dist <= width) & (y <= top), value, 0.0)
+
+
+class Picker(unittest.TestCase):
+    def setUp(self):
+        self.x, self.y = wedge_lattice()
+        rng = np.random.default_rng(5)
+        self.background = rng.exponential(0.02, self.x.size)  # weak, diffuse
+
+    def test_finds_a_forethrust_and_a_backthrust_and_nothing_else(self):
+        x, y = self.x, self.y
+        strain = self.background + band_strain(x, y, -1.5, 30, True, 1.3) + band_strain(x, y, -1.0, 60, False, 1.3)
+        picked = faults.pick_faults(x, y, strain, d_h0=0.1, seed=1)
+        self.assertEqual(len(picked), 2, [(f["kind"], f["dip_deg"], f["x_base"]) for f in picked])
+        by_kind = {f["kind"]: f for f in picked}
+        self.assertEqual(set(by_kind), {"forethrust", "backthrust"})
+        fore, back = by_kind["forethrust"], by_kind["backthrust"]
+        self.assertEqual(fore["side"], "pro")
+        self.assertAlmostEqual(fore["dip_deg"], 30, delta=3)
+        self.assertAlmostEqual(fore["x_base"], -1.5, delta=0.15)
+        self.assertAlmostEqual(back["dip_deg"], 60, delta=3)
+        self.assertAlmostEqual(back["x_base"], -1.0, delta=0.15)
+        self.assertGreater(fore["length"], 1.5)
+
+    def test_a_weak_background_alone_has_no_faults(self):
+        # Its 99.5th percentile sets the level: a quarter of it still leaves scattered discs,
+        # but no line of them.
+        picked = faults.pick_faults(self.x, self.y, self.background, d_h0=0.1, seed=1)
+        self.assertEqual(picked, [])
+
+    def test_retro_side_vergence_and_spacing(self):
+        x, y = self.x, self.y
+        # Two retro forethrusts (deepening towards the S-point, -x), 0.8 h0 apart along the base.
+        strain = self.background + band_strain(x, y, 0.2, 35, False, 1.2) + band_strain(x, y, 1.0, 35, False, 1.0)
+        picked = faults.pick_faults(x, y, strain, d_h0=0.1, seed=2, min_length=0.4)
+        self.assertEqual(len(picked), 2)
+        self.assertTrue(all(f["side"] == "retro" and f["kind"] == "forethrust" for f in picked))
+        gaps = faults.spacings(picked)
+        inner = min(range(2), key=lambda k: picked[k]["x_base"])
+        self.assertAlmostEqual(gaps[inner], 0.8, delta=0.15)  # to the next one out (+x)
+        self.assertTrue(math.isnan(gaps[1 - inner]))
+
+
+class Command(unittest.TestCase):
+    def test_bad_input_is_named(self):
+        with tempfile.TemporaryDirectory() as d:
+            for args, expect in (([d], "snapshots.h5 not found"), ([d, "--window", "0"], "--window 0"),
+                                 ([d, "--threshold", "2"], "--threshold 2")):
+                r = subprocess.run(module_command("orogen.analysis.faults", *args), capture_output=True, text=True)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertIn(expect, r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
