@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The cohesion series' table (docs/cohesion-evidence.md): for each run of a sweep over a bond
 strength, the wedge at its end (height, tapers), its faults over the last quarter of the run
 (orogen.analysis.faults: run it first in each run), and its bonds.

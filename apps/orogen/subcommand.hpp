@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace orogen::cli {
 
@@ -15,6 +17,17 @@ struct Subcommand {
 
 // Adds one subcommand to `parent`; its options live as long as the returned run function.
 using AddSubcommand = Subcommand (*)(CLI::App& parent);
+
+// A subcommand whose options a module of the Python package reads: one required positional
+// argument, every other word passed on as given (package_subcommand.cpp).
+struct PackageSubcommand {
+  const char* name;
+  const char* description;
+  const char* positional;
+  const char* positional_help;
+  std::function<int(const std::string& positional, std::vector<std::string> rest)> run;
+};
+Subcommand add_package_subcommand(CLI::App& parent, const PackageSubcommand& spec);
 
 // CLI11 reads an empty value as the default; for a number that is a mistake to report.
 CLI::Validator not_empty();

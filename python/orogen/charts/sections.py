@@ -21,9 +21,9 @@ one scale of each kind, so that their frames line up. Writes into each RUN (each
 What a reader sees:
 - **Horizons**: bands of initial depth h0/5 thick (--band), alternating dark and light; the
   middle band of the layer is a red marker bed. Material that started on the pro side
-  (x0 < 0) is blue, retro-side material brown, both at full contrast. A run of named materials
-  (docs/materials.md) colours each material its own hue instead, in the same bands, with
-  the materials' names as the key.
+  (x0 < 0) is blue, retro-side material brown, both at full contrast. A run of two or more named
+  materials (docs/materials.md) colours each material its own hue instead, in the same bands,
+  with the materials' names as the key.
 - **Faults**: the incremental maximum shear strain of each disc since the previous output
   (below), from white through orange to black on one scale for the whole run (the 99.5th
   percentile of every output's strain, or --strain-max to share one scale across runs).
@@ -354,7 +354,7 @@ def draw(kind, o, view, scale, value, band, width_px):
     o, value = in_view(o, view, value)
     fig, ax, cax = figure_for(view, width_px)
     title = "S = %.2f   output %d" % (o["S"], o["output"])
-    if kind == "horizons" and "material" in o:
+    if kind == "horizons" and "material" in o and len(o["materials"]) > 1:
         draw_discs(ax, o, material_colours(o["depth0"], o["material"], band))
         names = o["materials"] or ["material %d" % m for m in range(int(o["material"].max(initial=0)) + 1)]
         material_legend(cax, names)
