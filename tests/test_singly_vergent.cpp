@@ -3,7 +3,9 @@
 // and a shortening that would reach the far wall is refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -55,6 +57,29 @@ TEST(SinglyVergent, StrongerBaseBuildsASteeperWedgeWhoseTaperSettles) {
   // base this small layer slides and thickens as a whole, and where its "front" lies flips
   // from one realisation to the next.)
   EXPECT_GT(value(strong, "height_final"), value(weak, "height_final"));
+}
+
+TEST(SinglyVergent, AnInitialSlopeCutsAWedgeOfThatSurface) {
+  // Buiter et al. (2016) experiment 1's start: the settled layer cut to a 20-degree wedge h0
+  // high at the backstop.
+  const Config c = Config::load(std::nullopt, {"run.experiment=singly_vergent", "particles.packing=random_discs",
+                                               "layer.length=60", "layer.thickness=8", "contact.kn=2000",
+                                               "singly.initial_slope=20", "singly.shortening=1"});
+  auto exp = make_experiment(c);
+  World w;
+  apply_engine_config(c, w);
+  exp->setup(w);
+  const double x_back = w.wall(kBoxRight).ax, slope = std::tan(20.0 * std::numbers::pi / 180);
+  double top_near_back = 0, lowest_x = x_back;
+  for (std::size_t i = 0; i < w.discs.size(); ++i) {
+    EXPECT_LE(w.discs.y[i], 8.0 - slope * (x_back - w.discs.x[i]) + 1e-9) << "disc " << i;
+    if (x_back - w.discs.x[i] < 3) top_near_back = std::max(top_near_back, w.discs.y[i]);
+    lowest_x = std::min(lowest_x, w.discs.x[i]);
+  }
+  EXPECT_GT(top_near_back, 8.0 - slope * 3 - 1.0);  // the wedge reaches up to its surface
+  EXPECT_NEAR(x_back - lowest_x, 8.0 / slope, 2.0);  // and runs out where the surface meets the base
+  // Depths below the new surface (to the centre: the top discs lie a radius down).
+  EXPECT_LT(*std::min_element(w.discs.depth0.begin(), w.discs.depth0.end()), 0.5);
 }
 
 TEST(SinglyVergent, RefusesAShorteningThatReachesTheFarWall) {

@@ -220,6 +220,10 @@ const std::vector<KeySpec>& schema() {
            "the configuration, or nothing"),
       real("singly.mu_b", 0.2, ge(0), none, "basal (Coulomb) friction coefficient mu_b [-]"),
       real("singly.shortening", 5.0, gt(0), none, "run until the backstop has moved this far [h0]"),
+      real("singly.initial_slope", 0.0, ge(0), le(45),
+           "a wedge cut from the settled layer before shortening (Buiter et al. 2016, experiment 1): the discs "
+           "above a surface h0 high at the backstop and falling at this angle towards the far wall are removed; "
+           "0: the flat layer [deg]"),
       integer("singly.outputs", 50, ge(1), le(kMaxOutputs), "output steps over the run"),
       real("singly.steady_from", 0.5, ge(0), le(1),
            "the steady taper of the summary averages the outputs after this fraction of the run [-]"),
@@ -302,7 +306,7 @@ const std::vector<LaterKey>& later_keys() {
     std::vector<LaterKey> out;
     for (const std::string_view name :
          {"contact.normal_force", "contact.damping", "contact.damping_rate", "singly.speed_bound",
-          "particles.placement", "biaxial.material"})
+          "particles.placement", "biaxial.material", "singly.initial_slope"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
     out.push_back({"wedge.traction_law", format_value(std::string("drag"))});

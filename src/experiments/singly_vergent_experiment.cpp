@@ -8,9 +8,11 @@
 #include <limits>
 #include <numbers>
 
+#include "analysis/surface.hpp"
 #include "config/config.hpp"
 #include "experiments/series_table.hpp"
 #include "experiments/settled_layer.hpp"
+#include "packing/packing.hpp"
 #include "experiments/spec_from_config.hpp"
 
 namespace orogen {
@@ -28,6 +30,7 @@ void SinglyVergentExperiment::setup(World& w) {
   p.length = spec_.length;
   p.thickness = spec_.h0;
   settle_layer(w, p, spec_.settle);
+  if (spec_.initial_slope > 0) cut_wedge(w);
   w.set_wall_friction(kBoxFloor, WallFriction::Rough, spec_.mu_b);
   // Smooth, as the analytic and finite element solutions assume (thesis 3.2.3).
   const Wall backstop = w.wall(kBackstop);
@@ -35,6 +38,18 @@ void SinglyVergentExperiment::setup(World& w) {
   w.set_wall_velocity(kBackstop, -spec_.speed, backstop.vy);
   w.set_wall_ends(kBackstop, backstop.ax, backstop.ay, backstop.bx, std::max(backstop.by, 6.0 * spec_.h0 + 20.0));
   initial_discs_ = static_cast<std::int64_t>(w.discs.size());
+}
+
+// A wedge h0 high at the backstop whose surface falls at initial_slope towards the far wall
+// (Buiter et al. 2016, experiment 1): the discs (whole clusters) whose centre is above that
+// surface go, and the depths below the new surface are measured again.
+void SinglyVergentExperiment::cut_wedge(World& w) {
+  const double x_back = w.wall(kBackstop).ax, slope = std::tan(spec_.initial_slope);
+  std::vector<std::uint8_t> above(w.discs.size(), 0);
+  for (std::size_t i = 0; i < w.discs.size(); ++i)
+    above[i] = w.discs.y[i] > spec_.h0 - slope * (x_back - w.discs.x[i]);
+  w.remove(above, RemovalReason::Other);
+  record_initial_state(w, 0.0, spec_.length, spec_.column_width_factor * mean_radius(w.discs));
 }
 
 bool SinglyVergentExperiment::advance(World& w) {
@@ -213,6 +228,7 @@ std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& c) {
   s.speed = c.get_float("singly.speed");
   s.mu_b = c.get_float("singly.mu_b");
   s.shortening = c.get_float("singly.shortening");
+  s.initial_slope = c.get_float("singly.initial_slope") / kDegPerRad;
   s.outputs = c.get_int32("singly.outputs");
   s.steady_from = c.get_float("singly.steady_from");
   read_layer_keys(c, s);

@@ -18,6 +18,7 @@ struct SinglyVergentSpec {
   double speed = 0.025;      // backstop speed (sqrt(g d))
   double mu_b = 0.2;         // basal Coulomb friction
   double shortening = 5;     // run until the backstop has moved this far (h0)
+  double initial_slope = 0;  // surface slope of a wedge cut from the layer before shortening (rad); 0: flat
   int outputs = 50;          // output steps over the run
   double steady_from = 0.5;  // the taper statistics use outputs after this fraction of the run
   double column_width_factor = 2.3;
@@ -65,6 +66,8 @@ class SinglyVergentExperiment final : public Experiment {
   SinglyVergentShape shape(const World& world) const;
 
  private:
+  void cut_wedge(World& w);
+
   SinglyVergentSpec spec_;
   // The checkpointed state, each field once with its key, for save() and load()
   // (io/archive_fields.hpp).
