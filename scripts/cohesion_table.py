@@ -15,7 +15,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
-from orogen.tables import read_rows, read_summary, read_table  # noqa: E402
+from orogen.tables import read_rows, read_table  # noqa: E402
 
 
 def strength_of(run):

@@ -58,9 +58,12 @@ std::size_t World::make_bonds(std::size_t first, std::size_t last, std::uint64_t
   for (const auto& m : materials.list) gap_max = std::max(gap_max, m.bond.gap);
   // Cells as wide as the farthest a bonding pair can be apart: each pair is in neighbouring cells.
   const double cell = 2 * r_max + gap_max;
+  // A cell's key: its two indices packed in unsigned arithmetic (no shift of a negative number).
+  auto cell_key = [](std::int64_t gx, std::int64_t gy) {
+    return static_cast<std::int64_t>((static_cast<std::uint64_t>(gx) << 32) ^ (static_cast<std::uint64_t>(gy) & 0xffffffffULL));
+  };
   auto key = [&](double x, double y) {
-    return (static_cast<std::int64_t>(std::floor(x / cell)) << 32) ^
-           (static_cast<std::int64_t>(std::floor(y / cell)) & 0xffffffff);
+    return cell_key(static_cast<std::int64_t>(std::floor(x / cell)), static_cast<std::int64_t>(std::floor(y / cell)));
   };
   std::unordered_map<std::int64_t, std::vector<std::size_t>> grid;
   for (std::size_t i = 0; i < discs.size(); ++i)
@@ -82,7 +85,7 @@ std::size_t World::make_bonds(std::size_t first, std::size_t last, std::uint64_t
     std::vector<std::size_t> near;
     for (std::int64_t gx = cx - 1; gx <= cx + 1; ++gx)
       for (std::int64_t gy = cy - 1; gy <= cy + 1; ++gy)
-        if (auto it = grid.find((gx << 32) ^ (gy & 0xffffffff)); it != grid.end())
+        if (auto it = grid.find(cell_key(gx, gy)); it != grid.end())
           near.insert(near.end(), it->second.begin(), it->second.end());
     std::sort(near.begin(), near.end());
     for (const std::size_t j : near) {

@@ -73,7 +73,7 @@ def _run_along(t, link):
     return starts[k], ends[k]
 
 
-def _segment(px, py, w, band, link, idx):
+def _segment(px, py, w, link, idx):
     """The contiguous run of discs `idx` about their strain-weighted principal axis: (centre,
     direction, members, t_min, t_max)."""
     cx, cy = np.average(px[idx], weights=w[idx]), np.average(py[idx], weights=w[idx])
@@ -132,7 +132,7 @@ def pick_faults(x, y, strain, d_h0, threshold=0.25, min_length=0.5, core_x=0.0, 
                 best = (score, near[order[a:b]])
         if best is None:
             break
-        centre, u, members, t0, t1 = _segment(x, y, w, band, link, best[1])
+        centre, u, members, t0, t1 = _segment(x, y, w, link, best[1])
         length = t1 - t0
         if length < min_length or len(members) < 4:
             break
@@ -148,8 +148,12 @@ def pick_faults(x, y, strain, d_h0, threshold=0.25, min_length=0.5, core_x=0.0, 
             t0, t1 = -t1, -t0
         slope = u[1] / u[0] if u[0] != 0 else math.copysign(math.inf, u[1])
         dip = math.degrees(math.atan(abs(slope)))
-        x_base = centre[0] - centre[1] / slope if slope not in (0.0,) and math.isfinite(slope) else \
-            (centre[0] if not math.isfinite(slope) else math.nan)
+        if not math.isfinite(slope):  # vertical
+            x_base = centre[0]
+        elif slope == 0:  # parallel to the base (not reported: flatter than MIN_DIP_DEG)
+            x_base = math.nan
+        else:
+            x_base = centre[0] - centre[1] / slope
         side = "pro" if centre[0] < core_x else "retro"
         deepens_to_plus_x = slope < 0
         towards_core = deepens_to_plus_x if side == "pro" else not deepens_to_plus_x
