@@ -136,6 +136,21 @@ TEST(Bonds, ABondedBeamBendsAsTheDiscreteBeamSays) {
   EXPECT_TRUE(w.bonds.breaks.empty());
 }
 
+TEST(Bonds, MadeBetweenListBuildsActAtTheNextStep) {
+  // Bonds made where no disc is added (the biaxial test bonds its consolidated sample), after
+  // others have acted: no list build follows, and still they act from the next step.
+  World w = bonded_world({{0, 0}, {1, 0}, {5, 0}, {6, 0}}, bonding(100, 100));
+  ASSERT_EQ(w.make_bonds(0, 2, 1), 1u);
+  w.advance();
+  ASSERT_EQ(w.make_bonds(2, 4, 1), 1u);
+  w.discs.vx[3] = 1e-3;  // opening
+  ASSERT_FALSE(w.contacts_stale());
+  w.advance();
+  ASSERT_EQ(w.bonds.size(), 2u);
+  const std::size_t k = w.bonds.id_a[0] == 2 ? 0 : 1;
+  EXPECT_GT(w.bonds.fn[k], 0.0);  // the new bond pulls
+}
+
 TEST(Bonds, OfTwoKinematicDiscsAreLeftAsTheyAre) {
   // The incoming slab's bonds: their force would act on nothing, so they are not computed.
   World w = bonded_world({{0, 0}, {1, 0}}, bonding(1, 1));

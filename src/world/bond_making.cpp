@@ -115,6 +115,9 @@ std::size_t World::make_bonds(std::size_t first, std::size_t last, std::uint64_t
       ++made;
     }
   }
+  // New bonds are acting or not and out of order: the next step sorts them (prepare_bond_scratch),
+  // whether or not the list is rebuilt first (the biaxial test bonds without adding discs).
+  if (made > 0) bond_scratch.activity_build = ~std::uint64_t{0};
   return made;
 }
 

@@ -170,6 +170,7 @@ void load_world(const ArchiveReader& in, World& w) {
     w.removals.push_back({r_step[k], r_time[k], r_id[k], r_cluster[k], r_x[k], r_y[k],
                           static_cast<RemovalReason>(r_reason[k])});
   w.bonds = Bonds{};
+  w.bond_scratch = BondScratch{};  // which bonds act: found again at the first step
   if (in.has("bonds.id_a")) load_bonds(in, w.bonds);
 }
 
