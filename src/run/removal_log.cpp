@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
+#include <optional>
+#include <string_view>
 #include <fstream>
 
 #include "io/atomic_file.hpp"
@@ -41,8 +44,14 @@ std::string removal_log_difference(const std::filesystem::path& path, const std:
   std::ifstream in(path);
   if (!in) return "";
   std::size_t next = 0;  // the checkpoint's removal the next row must be
+  std::optional<std::uint64_t> file_through;  // the step the file was written at
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
+    if (constexpr std::string_view kThrough = "# through_step: "; line.starts_with(kThrough)) {
+      std::uint64_t step = 0;
+      const char* first = line.data() + kThrough.size();
+      if (std::from_chars(first, line.data() + line.size(), step).ec == std::errc()) file_through = step;
+    }
     if (line.empty() || line.front() == '#' || line.starts_with("step,")) continue;
     std::uint64_t step = 0;
     const auto [end, ec] = std::from_chars(line.data(), line.data() + line.size(), step);
@@ -57,6 +66,12 @@ std::string removal_log_difference(const std::filesystem::path& path, const std:
                          next < removals.size() ? removal_row(removals[next]) : "none");
     ++next;
   }
+  // A file written at an output before a stop's checkpoint (or by a build that did not write it
+  // with the checkpoint) lacks the removals made after it: they are the checkpoint's to write.
+  const auto after_file = [&](const RemovalRecord& r) { return file_through && r.step > *file_through; };
+  if (next < removals.size() && file_through && *file_through <= through_step &&
+      std::all_of(removals.begin() + static_cast<std::ptrdiff_t>(next), removals.end(), after_file))
+    return "";
   if (next < removals.size())
     return fmt::format("it lists {} removals up to step {}, the checkpoint {}", next, through_step, removals.size());
   return "";

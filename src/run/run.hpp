@@ -124,6 +124,7 @@ class Run {
 
   // checkpoint.bin: the world, the experiment and the driver's state, with the configuration.
   void checkpoint();
+  void write_event_logs();  // removals.csv and bond_breaks.csv, through the current step
 
   // The checkpoint must come from a run of this folder's configuration.
   void check_checkpoint_belongs(const ArchiveReader& in) const;

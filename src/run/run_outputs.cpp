@@ -63,9 +63,7 @@ void Run::output() {
   snapshots_->append(frame);
   state_.vtp_digests.push_back(write_vtp_ ? write_vtp(dir_ / vtp_file_name(state_.outputs), frame) : 0);
   series_->add_row(exp_->measure(world_));
-  write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
-  if (world_.materials.any_bonds())
-    write_bond_break_log(dir_ / "bond_breaks.csv", world_.bonds.breaks, world_.bonds.size(), world_.step);
+  write_event_logs();
   state_.output_times.push_back(world_.time);
   ++state_.outputs;
   last_output_step_ = world_.step;
@@ -99,7 +97,16 @@ void Run::write_pvd_file() {
   write_pvd(dir_ / "run.pvd", entries);
 }
 
+void Run::write_event_logs() {
+  write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
+  if (world_.materials.any_bonds())
+    write_bond_break_log(dir_ / "bond_breaks.csv", world_.bonds.breaks, world_.bonds.size(), world_.step);
+}
+
 void Run::checkpoint() {
+  // The logs first: a kill between the two leaves rows after the old checkpoint, which a resume
+  // accepts; the other order would leave a checkpoint whose removals the file lacks.
+  write_event_logs();
   ArchiveWriter out;
   save_world(out, world_);
   exp_->save(out);

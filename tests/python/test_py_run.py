@@ -145,3 +145,34 @@ def test_a_run_into_a_folder_that_holds_one_names_the_python_call_that_continues
     assert refused.value.code == 2
     assert f"orogen.resume({str(out)!r})" in str(refused.value) and "run.log" not in str(refused.value)
     assert sorted(p.name for p in out.iterdir()) == before
+
+
+PACKING = {"run": {"experiment": "packing", "threads": 1}, "particles": {"packing": "random_discs"},
+           "layer": {"length": 10.0, "thickness": 3.0}, "contact": {"kn": 1000.0},
+           "settle": {"relax_time": 1.0, "ke_threshold": 1e-3}, "output": {"interval": 2.0, "progress": "never"}}
+
+
+def test_a_stop_between_a_removal_and_the_next_output_resumes(tmp_path):
+    """The packing trims 9 discs at step 2200, between outputs 4 (step 1836) and 5 (2295): a stop
+    at step 2250 checkpoints them, and removals.csv must agree with that checkpoint (the long run
+    E(V) could not be resumed when the file lagged it)."""
+    whole, parts = tmp_path / "whole", tmp_path / "parts"
+    assert orogen.run(PACKING, out=whole) == orogen.FINISHED
+    assert orogen.run(PACKING, out=parts, hook=lambda w: w.step == 2250, every=10) == orogen.STOPPED
+    assert "2200," in (parts / "removals.csv").read_text()  # written with the checkpoint
+    assert orogen.resume(parts) == orogen.FINISHED
+    assert (parts / "removals.csv").read_text() == (whole / "removals.csv").read_text()
+    assert (parts / "series.csv").read_text() == (whole / "series.csv").read_text()
+
+
+def test_a_removals_file_that_lags_the_checkpoint_is_accepted(tmp_path):
+    """A folder left by a build that wrote removals.csv only at outputs: the file ends before the
+    stop's removals, and the resume writes them."""
+    whole, parts = tmp_path / "whole", tmp_path / "parts"
+    assert orogen.run(PACKING, out=whole) == orogen.FINISHED
+    assert orogen.run(PACKING, out=parts, hook=lambda w: w.step == 2250, every=10) == orogen.STOPPED
+    header = [line for line in (parts / "removals.csv").read_text().splitlines(keepends=True)
+              if not line[0].isdigit()]
+    (parts / "removals.csv").write_text("".join(header).replace("through_step: 2250", "through_step: 1836"))
+    assert orogen.resume(parts) == orogen.FINISHED
+    assert (parts / "removals.csv").read_text() == (whole / "removals.csv").read_text()
