@@ -56,6 +56,8 @@ kn = 2000.0
 speed = 0.05
 shortening = 1.0
 outputs = 5
+basal_weakening = 0.5
+basal_weakening_distance = 0.5
 [output]
 progress = "never"
 vtp = false
@@ -151,6 +153,9 @@ TEST_F(MaterialsCli, BadMaterialsAndUnitsExitWith2AndWriteNothing) {
        {"materials.rock.bond_shear_strength", "> 0 for a material that bonds"}},
       {base + "[time]\ndt = 0.005\n" + rock + "bond_tensile_strength = 2.0\nbond_stiffness = 100.0\n",
        {"time.dt", "0.005", "stability limit", "bond_stiffness"}},
+      {base + "[singly]\nbasal_weakening = 0.3\n", {"singly.basal_weakening", "0.3", "[materials.NAME]"}},
+      {base + "[singly]\nbasal_weakening = 1.0\n" + rock, {"singly.basal_weakening", "< 1"}},
+      {"[wedge]\nbasal_weakening = 0.2\n", {"wedge.basal_weakening", "0.2", "[materials.NAME]"}},
   };
   int k = 0;
   for (const auto& c : cases) {

@@ -50,7 +50,7 @@ ContactList measure(const World& w) {
     if (row[k.wall] < 0) return;
     const WallContactForce f = wall_contact_force<Normal>(w.walls[k.wall], d.x[i], d.y[i], d.vx[i], d.vy[i],
                                                           d.omega[i], d.radius[i], k.gamma_n, k.traction_mass, k.xi,
-                                                          w.law, w.dt);
+                                                          d.has_materials ? d.slip[i] : 0.0, w.law, w.dt);
     if (!f.touching) return;
     const double reach = d.radius[i] - 0.5 * f.delta;
     add(c, true, row[k.wall], d.id[i], -1, i, d.x[i] - reach * f.nx, d.y[i] - reach * f.ny, f.nx, f.ny, f.fn,

@@ -23,9 +23,28 @@ struct Wall {
   double mu = 0.0;                        // Coulomb coefficient against discs
   double traction_gamma = 0.0;            // drag coefficient of a Traction wall (force per speed)
   bool enabled = true;                    // a removed wall stays in the list, switched off
+  // A weakening wall (a world of materials): its coefficient at a disc falls linearly from mu to
+  // mu_residual over weakening_distance of the disc's accumulated slip (Discs::slip), as a
+  // material's friction does (contact/materials.hpp), and the disc's slip on it adds to that slip.
+  bool weakens = false;
+  double mu_residual = 0.0;
+  double weakening_distance = 1.0;  // [d]
 
   double length() const;
 };
+
+// A base that weakens with slip ([wedge] and [singly] basal_weakening keys): the fraction of a
+// wall's mu it loses, over `distance` of a disc's slip [d]. fraction 0: the wall keeps its mu.
+struct BaseWeakening {
+  double fraction = 0;
+  double distance = 1;
+};
+
+inline void set_weakening(Wall& w, const BaseWeakening& b) {
+  w.weakens = b.fraction > 0;
+  w.mu_residual = w.mu * (1.0 - b.fraction);
+  w.weakening_distance = b.distance;
+}
 
 // A wall's segment as the distance tests use it: start point, the vector a -> b and its
 // squared length.

@@ -4,6 +4,7 @@
 // (boundary/wall_forces.cpp) and the contact output (analysis/contact_forces.cpp) both call
 // it, so the stored forces are bitwise those the next step applies. Without branches, as the
 // pair kernel: the force stage runs it in the lanes of a vector loop over one wall's contacts.
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -21,6 +22,7 @@ struct WallContactForce {
   double delta = 0;       // overlap
   double fn = 0, ft = 0;  // normal and tangential (along t = n rotated +90 degrees) force on the disc
   double xi = 0;          // history after the step (0 when apart or smooth)
+  double slip = 0;        // sliding in this step on the Coulomb limit (0 off it): a weakening wall's
 };
 
 // What the law needs of a wall, worked out once per wall and force pass rather than per
@@ -29,24 +31,38 @@ struct WallFrame {
   Segment segment;
   double wvx, wvy;  // velocity of the wall's surface: the wall's own plus its belt's
   double mu, traction_gamma;
+  double mu_lost, inverse_weakening_distance;  // a weakening wall: mu - mu_residual, 1 / distance (else 0, 0)
 };
+
+// The wall's coefficient at a disc that has slipped `slip` (branch-free; mu itself when the wall
+// does not weaken).
+inline double wall_mu(const WallFrame& f, double slip) {
+  return f.mu - f.mu_lost * std::min(1.0, slip * f.inverse_weakening_distance);
+}
 
 inline WallFrame wall_frame(const Wall& w) {
   const Segment g = segment(w);
   const double len = w.length();
   const double ux = len > 0 ? g.ex / len : 0, uy = len > 0 ? g.ey / len : 0;
-  return {g, w.vx + w.surface_speed * ux, w.vy + w.surface_speed * uy, w.mu, w.traction_gamma};
+  return {g,
+          w.vx + w.surface_speed * ux,
+          w.vy + w.surface_speed * uy,
+          w.mu,
+          w.traction_gamma,
+          w.weakens ? w.mu - w.mu_residual : 0.0,
+          w.weakens ? 1.0 / w.weakening_distance : 0.0};
 }
 
 // Disc at (x, y) with velocity (vx, vy), spin omega and radius r; gamma_n, traction_mass and xi_old
-// are the contact's own (WallContacts, contact/contact_store.hpp). Normal is a registered
+// are the contact's own (WallContacts, contact/contact_store.hpp); mu the wall's coefficient at
+// this disc (f.mu, or wall_mu of the disc's slip for a weakening wall). Normal is a registered
 // normal law (contact/normal_laws.hpp); kFriction the wall's friction kind, each built from
 // the kernels of contact/law_kernels.hpp that the pair kernel uses too. A disc apart from the
 // wall (or exactly on it, with no normal) gets zeros; its values are computed and masked.
 template <class Normal, WallFriction kFriction>
 inline WallContactForce wall_contact_lane(const WallFrame& f, double x, double y, double vx, double vy, double omega,
-                                          double r, double gamma_n, double traction_mass, double xi_old, double kn,
-                                          double ks, double damping_ratio, double dt) {
+                                          double r, double gamma_n, double traction_mass, double xi_old, double mu,
+                                          double kn, double ks, double damping_ratio, double dt) {
   double cx, cy;
   const double dist2 = closest_point(f.segment, x, y, cx, cy);
   const bool touching = !(dist2 >= r * r) & (dist2 != 0.0);
@@ -60,7 +76,7 @@ inline WallContactForce wall_contact_lane(const WallFrame& f, double x, double y
   const double vn = rvx * nx + rvy * ny;  // > 0 when separating
   const double vt = rvx * tx + rvy * ty;
   const double fn = Normal::force(kn, delta, gamma_n, vn, r);  // a wall: the disc's radius
-  const double limit = f.mu * Normal::load(fn);
+  const double limit = mu * Normal::load(fn);
   Tangential t{0.0, 0.0, false};  // smooth: no tangential force, no history
   if constexpr (kFriction == WallFriction::Rough) {
     t = tangential_spring(xi_old, vt, dt, ks, damping_ratio * gamma_n, limit);
@@ -79,6 +95,7 @@ inline WallContactForce wall_contact_lane(const WallFrame& f, double x, double y
   c.delta = select(touching, delta, 0.0);
   c.fn = select(touching, fn, 0.0); c.ft = select(touching, t.ft, 0.0);
   c.xi = select(touching, t.xi, 0.0);
+  c.slip = select(c.at_limit, std::fabs(xi_old + vt * dt - t.xi), 0.0);
   return c;
 }
 
@@ -93,15 +110,17 @@ void with_wall_friction(WallFriction kind, F&& f) {
   }
 }
 
-// The same law for one contact, for callers outside the force loop (the contact output).
+// The same law for one contact, for callers outside the force loop (the contact output); slip
+// is the disc's accumulated slip (0 without materials).
 template <class Normal>
 inline WallContactForce wall_contact_force(const Wall& w, double x, double y, double vx, double vy, double omega,
                                            double r, double gamma_n, double traction_mass, double xi_old,
-                                           const ContactLaw& law, double dt) {
+                                           double slip, const ContactLaw& law, double dt) {
   WallContactForce c;
+  const WallFrame frame = wall_frame(w);
   with_wall_friction(w.friction, [&](auto kind) {
-    c = wall_contact_lane<Normal, decltype(kind)::value>(wall_frame(w), x, y, vx, vy, omega, r, gamma_n,
-                                                         traction_mass, xi_old, law.kn, law.ks,
+    c = wall_contact_lane<Normal, decltype(kind)::value>(frame, x, y, vx, vy, omega, r, gamma_n, traction_mass,
+                                                         xi_old, wall_mu(frame, slip), law.kn, law.ks,
                                                          law.tangential_damping_ratio, dt);
   });
   return c;

@@ -18,6 +18,7 @@ namespace {
 Bound gt(double v) { return {v, false}; }
 Bound ge(double v) { return {v, true}; }
 Bound le(double v) { return {v, true}; }
+Bound lt(double v) { return {v, false}; }
 constexpr std::nullopt_t none = std::nullopt;
 
 KeySpec real(std::string name, double def, std::optional<Bound> lo, std::optional<Bound> hi,
@@ -166,6 +167,12 @@ const std::vector<KeySpec>& schema() {
       real("wedge.mu_bp", 0.2, ge(0), none, "pro-side basal friction coefficient mu_bp [-]"),
       real("wedge.mu_br", 0.4, ge(0), none,
            "retro-side basal friction coefficient mu_br; 2 mu_bp, the lowest ratio of Experiment 3 [-]"),
+      real("wedge.basal_weakening", 0.0, ge(0), lt(1),
+           "fraction of the basal friction (mu_bp and mu_br) a base contact loses as its disc slips: the "
+           "coefficient falls linearly from mu to mu (1 - this) over wedge.basal_weakening_distance of the "
+           "disc's accumulated slip (a world of materials, docs/materials.md); 0: no weakening [-]"),
+      real("wedge.basal_weakening_distance", 1.0, gt(0), none,
+           "slip over which the base weakens by wedge.basal_weakening [d]"),
       text("wedge.traction_law", "spring", {"spring", "drag"},
            "law of the pro-side plate under basal = traction: spring, a Coulomb belt (tangential "
            "spring with history moving with the plate, capped at mu_bp F_n), which transmits mu_bp "
@@ -219,6 +226,12 @@ const std::vector<KeySpec>& schema() {
            "the constant-velocity base, not a stability limit for a backstop) does: log a warning, refuse "
            "the configuration, or nothing"),
       real("singly.mu_b", 0.2, ge(0), none, "basal (Coulomb) friction coefficient mu_b [-]"),
+      real("singly.basal_weakening", 0.0, ge(0), lt(1),
+           "fraction of mu_b a base contact loses as its disc slips, linearly over "
+           "singly.basal_weakening_distance of the disc's accumulated slip (a world of materials, "
+           "docs/materials.md); 0: no weakening [-]"),
+      real("singly.basal_weakening_distance", 1.0, gt(0), none,
+           "slip over which the base weakens by singly.basal_weakening [d]"),
       real("singly.shortening", 5.0, gt(0), none, "run until the backstop has moved this far [h0]"),
       real("singly.initial_slope", 0.0, ge(0), le(45),
            "a wedge cut from the settled layer before shortening (Buiter et al. 2016, experiment 1): the discs "
@@ -306,7 +319,8 @@ const std::vector<LaterKey>& later_keys() {
     std::vector<LaterKey> out;
     for (const std::string_view name :
          {"contact.normal_force", "contact.damping", "contact.damping_rate", "singly.speed_bound",
-          "particles.placement", "biaxial.material", "singly.initial_slope"})
+          "particles.placement", "biaxial.material", "singly.initial_slope", "wedge.basal_weakening",
+          "wedge.basal_weakening_distance", "singly.basal_weakening", "singly.basal_weakening_distance"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
     out.push_back({"wedge.traction_law", format_value(std::string("drag"))});

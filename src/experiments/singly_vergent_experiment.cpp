@@ -32,6 +32,7 @@ void SinglyVergentExperiment::setup(World& w) {
   settle_layer(w, p, spec_.settle);
   if (spec_.initial_slope > 0) cut_wedge(w);
   w.set_wall_friction(kBoxFloor, WallFriction::Rough, spec_.mu_b);
+  w.set_wall_weakening(kBoxFloor, spec_.base_weakening);
   // Smooth, as the analytic and finite element solutions assume (thesis 3.2.3).
   const Wall backstop = w.wall(kBackstop);
   w.set_wall_friction(kBackstop, WallFriction::Smooth, backstop.mu);
@@ -227,6 +228,7 @@ std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& c) {
   s.length = c.get_float("layer.length");
   s.speed = c.get_float("singly.speed");
   s.mu_b = c.get_float("singly.mu_b");
+  s.base_weakening = base_weakening(c, "singly");
   s.shortening = c.get_float("singly.shortening");
   s.initial_slope = c.get_float("singly.initial_slope") / kDegPerRad;
   s.outputs = c.get_int32("singly.outputs");

@@ -17,6 +17,7 @@ struct SinglyVergentSpec {
   double length = 200;       // layer length (d)
   double speed = 0.025;      // backstop speed (sqrt(g d))
   double mu_b = 0.2;         // basal Coulomb friction
+  BaseWeakening base_weakening;  // of mu_b with the discs' slip (singly.basal_weakening)
   double shortening = 5;     // run until the backstop has moved this far (h0)
   double initial_slope = 0;  // surface slope of a wedge cut from the layer before shortening (rad); 0: flat
   int outputs = 50;          // output steps over the run

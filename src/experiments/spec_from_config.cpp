@@ -93,6 +93,17 @@ void check_imposed_speed(const Config& c, const std::string& key) {
                        fmt::format("{}", c.get_float(key)), excess);
 }
 
+BaseWeakening base_weakening(const Config& c, std::string_view section) {
+  const std::string key = fmt::format("{}.basal_weakening", section);
+  const BaseWeakening b{c.get_float(key), c.get_float(key + "_distance")};
+  if (b.fraction > 0 && c.materials().empty())
+    throw config_error(c.sources_of({key}), key, fmt::format("{}", b.fraction),
+                       "0 without [materials.NAME]: the base weakens with the slip each disc accumulates, "
+                       "which a world of named materials keeps (docs/materials.md); define the layer's "
+                       "material, or set 0");
+  return b;
+}
+
 std::vector<std::string> config_warnings(const Config& c) {
   std::vector<std::string> out;
   if (c.get_string("run.experiment") == "singly_vergent" && c.get_string("singly.speed_bound") == "warn") {

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "boundary/wall.hpp"
 #include "experiments/packing_experiment.hpp"
 
 namespace orogen {
@@ -22,6 +23,10 @@ void read_layer_keys(const Config& config, Spec& spec) {
   spec.settle = settle_spec(config);
   if constexpr (requires { spec.column_width_factor; }) spec.column_width_factor = spec.settle.column_width_factor;
 }
+
+// [section].basal_weakening and basal_weakening_distance; a weakening base needs the disc slip
+// that a world of materials keeps ([materials.NAME]), else ConfigError naming the key.
+BaseWeakening base_weakening(const Config& config, std::string_view section);
 
 // Refuses (ConfigError) material of length x thickness [d] whose estimated disc count, or whose
 // number of surface columns, is above kMaxParticles (or not finite), before anything is

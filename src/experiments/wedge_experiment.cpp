@@ -72,6 +72,8 @@ void WedgeExperiment::build_layer(World& w) {
   Wall retro{.name = std::string(kRetroBase), .ax = 0, .ay = 0, .bx = x_end_ + 1, .by = 0,
              .friction = WallFriction::Rough, .mu = spec_.mu_br};
   Wall end{.name = std::string(kRetroEnd), .ax = x_end_, .ay = -1, .bx = x_end_, .by = 20 * spec_.h0};
+  set_weakening(pro, spec_.base_weakening);
+  set_weakening(retro, spec_.base_weakening);
   w.set_walls({pro, retro, end});
   // Until a wedge exists, the layer in front of the S-point stalls on its base and must be
   // long enough to break at the S-point rather than against the rigid kinematic slab.
@@ -312,6 +314,8 @@ void WedgeExperiment::load(const ArchiveReader& in) {
 void WedgeExperiment::adopt_branch_config(World& w) const {
   w.set_wall_friction(kProBase, w.wall(kProBase).friction, spec_.mu_bp);
   w.set_wall_friction(kRetroBase, w.wall(kRetroBase).friction, spec_.mu_br);
+  w.set_wall_weakening(kProBase, spec_.base_weakening);
+  w.set_wall_weakening(kRetroBase, spec_.base_weakening);
 }
 
 std::string WedgeExperiment::status(const World& w) const {

@@ -28,6 +28,7 @@ struct WedgeSpec {
   double h0 = 10;              // layer thickness (d)
   double v = 0.025;            // convergence speed of the pro-side plate (d per sqrt(d/g))
   double mu_bp = 0.2, mu_br = 0.4;  // basal friction, pro and retro side
+  BaseWeakening base_weakening;     // of both with the discs' slip (wedge.basal_weakening)
   TractionLaw traction_law = TractionLaw::Spring;
   double gamma_b = 1e4;        // traction drag coefficient (m g / sqrt(g d)), TractionLaw::Drag only
   double s_end = 8;            // run until this normalised convergence S

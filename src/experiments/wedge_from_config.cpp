@@ -57,6 +57,7 @@ std::unique_ptr<Experiment> make_wedge_experiment(const Config& c) {
   w.v = c.get_float("wedge.speed");
   w.mu_bp = c.get_float("wedge.mu_bp");
   w.mu_br = c.get_float("wedge.mu_br");
+  w.base_weakening = base_weakening(c, "wedge");
   w.traction_law = c.get_string("wedge.traction_law") == "drag" ? TractionLaw::Drag : TractionLaw::Spring;
   w.fronts = c.get_string("wedge.fronts") == "discs" ? FrontRule::Discs : FrontRule::Surface;
   w.gamma_b = c.get_float("wedge.gamma_b");

@@ -101,6 +101,13 @@ void World::step_stages(const ThreadSplit* given) {
       disc_friction[i] = materials.list[discs.material[i]].friction_at(discs.slip[i]);
     mu_disc = disc_friction.data();
   }
+  // Weakening walls: each disc's coefficient from its slip as the step began (the pair stage adds
+  // to it before the wall stage runs).
+  WallSlip wall_slip;
+  if (discs.has_materials && std::any_of(walls.begin(), walls.end(), [](const Wall& w) { return w.weakens; })) {
+    slip_at_step_start.assign(discs.slip.begin(), discs.slip.end());
+    wall_slip = {slip_at_step_start.data(), discs.slip.data()};
+  }
   if (!bonds.id_a.empty()) prepare_bond_scratch(bonds, discs, neighbors.builds, bond_scratch);
   const std::size_t bond_count = bonds.id_a.empty() ? 0 : bond_scratch.acting;
   // One thread team for all three stages (a team per stage cost a fork and a join each), each
@@ -116,7 +123,7 @@ void World::step_stages(const ThreadSplit* given) {
     const ThreadSplit& split = whole_team ? cut : fallback;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     pair_forces_share(neighbors, contacts.pairs, discs, law, mu_disc, dt, forces, split, t);
-    wall_forces_share(contacts.walls, discs, walls, law, dt, forces, split, t);
+    wall_forces_share(contacts.walls, discs, walls, law, dt, wall_slip, forces, split, t);
     // A body's members may lie in the next thread's stretch: their forces must be whole before
     // it gathers them, and their wall contacts read before it moves them.
 #pragma omp barrier

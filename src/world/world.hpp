@@ -64,6 +64,7 @@ struct World {
   PairScratch scratch;
   BondScratch bond_scratch;
   std::vector<double> disc_friction;  // each disc's friction in this step (a world of materials)
+  std::vector<double> slip_at_step_start;  // each disc's slip as the step began (weakening walls)
   double moved = 0;  // largest disc displacement since the last list build (from integration)
   double dt = 1e-3;
   double time = 0;
@@ -143,6 +144,8 @@ struct World {
   void set_wall_velocity(std::string_view name, double vx, double vy);
   // Smooth, rough or traction, and its Coulomb coefficient (read at every force pass).
   void set_wall_friction(std::string_view name, WallFriction friction, double mu);
+  // Makes the wall weaken with the discs' slip from its present mu (fraction 0: it does not).
+  void set_wall_weakening(std::string_view name, const BaseWeakening& weakening);
   // New end points: the list follows by its own test (wall_displacement), as for a moving wall.
   void set_wall_ends(std::string_view name, double ax, double ay, double bx, double by);
   // A disabled wall has no contacts: the list is rebuilt.

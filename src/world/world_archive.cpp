@@ -1,5 +1,8 @@
 #include "world/world_archive.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 namespace orogen {
@@ -80,6 +83,14 @@ void save_world(ArchiveWriter& out, World& w) {
   out.put("walls.geometry", wall_geometry);
   out.put("walls.flags", wall_flags);
   out.put_string("walls.names", wall_names);
+  // Weakening walls (mu_residual, weakening_distance, or NaN for a wall that does not weaken):
+  // only when there is one, so that other checkpoints stay as they were.
+  if (std::any_of(w.walls.begin(), w.walls.end(), [](const Wall& wall) { return wall.weakens; })) {
+    std::vector<double> weakening;
+    for (const auto& wall : w.walls)
+      weakening.insert(weakening.end(), {wall.weakens ? wall.mu_residual : std::numeric_limits<double>::quiet_NaN(), wall.weakening_distance});
+    out.put("walls.weakening", weakening);
+  }
 
   auto& L = w.neighbors;
   for_each_contact_array(L, w.contacts, [&](std::string_view name, auto& v) { out.put(key("nl", name), v); });
@@ -138,6 +149,15 @@ void load_world(const ArchiveReader& in, World& w) {
     wall.friction = static_cast<WallFriction>(flags[2 * k]);
     wall.enabled = flags[2 * k + 1] != 0;
     w.walls.push_back(wall);
+  }
+  if (in.has("walls.weakening")) {
+    std::vector<double> weakening;
+    in.get("walls.weakening", weakening);
+    for (std::size_t k = 0; k < w.walls.size(); ++k) {
+      w.walls[k].weakens = !std::isnan(weakening[2 * k]);
+      w.walls[k].mu_residual = w.walls[k].weakens ? weakening[2 * k] : 0.0;
+      w.walls[k].weakening_distance = weakening[2 * k + 1];
+    }
   }
 
   auto& L = w.neighbors;

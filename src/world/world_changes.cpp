@@ -39,6 +39,10 @@ void World::set_wall_friction(std::string_view name, WallFriction friction, doub
   w.mu = mu;
 }
 
+void World::set_wall_weakening(std::string_view name, const BaseWeakening& weakening) {
+  set_weakening(walls[wall_index(name)], weakening);
+}
+
 void World::set_wall_ends(std::string_view name, double ax, double ay, double bx, double by) {
   Wall& w = walls[wall_index(name)];
   w.ax = ax; w.ay = ay; w.bx = bx; w.by = by;
