@@ -1,10 +1,11 @@
 """Calibration of a material (docs/materials.md, Calibration): what PFC users do before every
 study. Biaxial tests (run.experiment = "biaxial") of a sample of one material at three or more
 confining stresses, and from their peak and residual stress states the Mohr-Coulomb envelopes:
-friction angle, cohesion and unconfined compressive strength, with the stress-strain curves.
+friction angle, cohesion and unconfined compressive strength, with the stress-strain curves;
+and a Brazilian test (biaxial.test = "brazilian") for the tensile strength.
 
     python3 -m orogen.calibrate CONFIG --out DIR [--material NAME] [--sigma3 2,5,10]
-                                [--jobs 2] [--set KEY=VALUE ...]
+                                [--tension-sigma3 0.5] [--no-tension] [--jobs 2] [--set KEY=VALUE ...]
     orogen calibrate CONFIG --out DIR ...
 
 CONFIG holds the material ([materials.NAME]) and the sample's keys (particles.*, contact.*,
@@ -12,14 +13,20 @@ biaxial.*); the tests run it as a biaxial test of that material (biaxial.materia
 biaxial.sigma3. Writes into DIR:
 
     sigma3_X/            each test, an orogen run folder (a test already finished is kept)
+    brazilian/           the Brazilian test: the sample (biaxial.height = biaxial.width) consolidated
+                         at --tension-sigma3, cut to its inscribed disc, bonded, split between platens
     calibration.csv      one row per test: sigma3, the peak and residual stresses, strains
-    calibration.json     the envelopes (peak, residual): phi, cohesion, UCS, their standard errors
-    calibration.png/.pdf the stress-strain curves and the Mohr circles with the envelopes
+    calibration.json     the envelopes (peak, residual): phi, cohesion, UCS, their standard errors;
+                         the tensile strength 2 F_peak / (pi D) (null with --no-tension)
+    calibration.png/.pdf the stress-strain curves, the Mohr circles with the envelopes, the
+                         Brazilian test's platen force
 
 Stresses are the biaxial test's, in m g / d^2 (m = pi / 4, the mass of a disc of diameter 1: the
 biaxial.sigma3 unit); the JSON gives cohesion and UCS also in rho g d, the unit of the bond
 strengths (times pi / 4). The fit: sigma1 = UCS + N sigma3 by least squares (scipy), so
-sin(phi) = (N - 1) / (N + 1) and c = UCS / (2 sqrt(N)). A tensile test is not part of it yet.
+sin(phi) = (N - 1) / (N + 1) and c = UCS / (2 sqrt(N)). The tensile strength is measured, not
+extrapolated from the envelope (a Mohr-Coulomb line overestimates it: bonded materials fail in
+tension at a fraction of c / tan(phi)).
 """
 
 import argparse
@@ -27,6 +34,7 @@ import json
 import math
 import os
 import sys
+import tomllib
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -94,22 +102,44 @@ def test_states(folder):
             "residual": {"sigma1": float(np.mean(s1[late])), "sigma3": float(np.mean(s3[late]))}}
 
 
-def calibrate(config, out, material="", sigma3=(2.0, 5.0, 10.0), jobs=2, sets=None):
-    """Runs the tests (jobs at a time) and writes the tables and figure; returns the envelopes."""
+def tension_state(folder):
+    """The Brazilian test of one finished folder: its summary and platen force against strain."""
+    cols, _ = read_table(os.path.join(folder, "series.csv"))
+    summary, _ = read_table(os.path.join(folder, "summary.csv"))
+    loading = cols["phase"] >= 1
+    return {"strain": cols["axial_strain"][loading],
+            "force": cols["sigma1"][loading] * cols["width"][loading],
+            "summary": {k: float(v[0]) for k, v in summary.items()}}
+
+
+def calibrate(config, out, material="", sigma3=(2.0, 5.0, 10.0), jobs=2, sets=None, tension_sigma3=0.5):
+    """Runs the tests (jobs at a time) and writes the tables and figure; returns the envelopes.
+    tension_sigma3: the Brazilian test's consolidation stress (None: no Brazilian test)."""
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     jobs_list = []
-    for s in sigma3:
+
+    def add_job(name, extra):
         keys = dict(sets or {})
-        keys.update({"run.experiment": "biaxial", "biaxial.sigma3": float(s), "output.progress": "never"})
+        keys.update({"run.experiment": "biaxial", "output.progress": "never"})
+        keys.update(extra)
         if material:
             keys["biaxial.material"] = material
         # Bad keys named here, before any test starts (a worker's error would only break the pool).
         load_config(config, keys).check_experiment()
-        jobs_list.append((str(config), str(out / ("sigma3_%g" % s)), keys))
+        jobs_list.append((str(config), str(out / name), keys))
+
+    for s in sigma3:
+        add_job("sigma3_%g" % s, {"biaxial.sigma3": float(s)})
+    if tension_sigma3 is not None:
+        width = tomllib.loads(load_config(config, dict(sets or {})).to_toml())["biaxial"]["width"]
+        add_job("brazilian", {"biaxial.test": "brazilian", "biaxial.sigma3": float(tension_sigma3),
+                              "biaxial.height": width, "biaxial.strain_end": 0.03,
+                              "biaxial.outputs": 100})
     with ProcessPoolExecutor(max_workers=max(1, jobs)) as pool:
         folders = list(pool.map(_test, jobs_list))
-    tests = [test_states(f) for f in folders]
+    tests = [test_states(f) for f in folders[:len(sigma3)]]
+    tension = tension_state(folders[-1]) if tension_sigma3 is not None else None
     result = {"material": material or "(the configuration's first)", "config": str(config),
               "sigma3_targets": [float(s) for s in sigma3],
               "peak": fit_envelope([t["peak"]["sigma3"] for t in tests], [t["peak"]["sigma1"] for t in tests]),
@@ -117,6 +147,12 @@ def calibrate(config, out, material="", sigma3=(2.0, 5.0, 10.0), jobs=2, sets=No
                                        [t["residual"]["sigma1"] for t in tests]),
               "units": "stresses in m g / d^2 (m = pi / 4), as biaxial.sigma3; *_rho_g_d in rho g d",
               "tensile_strength": None}
+    if tension is not None:
+        t = tension["summary"]
+        result["tensile_strength"] = {
+            "sigma_t": t["tensile_strength"], "sigma_t_rho_g_d": t["tensile_strength_rho_g_d"],
+            "peak_force": t["peak_force"], "diameter": t["diameter"], "consolidation_sigma3": float(tension_sigma3),
+            "bonds_broken": t["bonds_broken"], "test": "Brazilian: 2 F_peak / (pi D), unit thickness"}
     rows = ["# one biaxial test per row (orogen calibrate); stresses in m g / d^2, m = pi / 4",
             "sigma3_target,sigma3_peak,sigma1_peak,axial_strain_peak,sigma3_residual,sigma1_residual"]
     for s, t in zip(sigma3, tests):
@@ -124,20 +160,22 @@ def calibrate(config, out, material="", sigma3=(2.0, 5.0, 10.0), jobs=2, sets=No
                                            t["residual"]["sigma3"], t["residual"]["sigma1"]))
     write_text(out / "calibration.csv", "\n".join(rows) + "\n")
     write_text(out / "calibration.json", json.dumps(result, indent=2, sort_keys=True) + "\n")
-    fig = figure(tests, sigma3, result)
+    fig = figure(tests, sigma3, result, tension)
     for fmt in ("png", "pdf"):
         save_figure(fig, out / ("calibration." + fmt), fmt, 120, {"png": {"Software": None},
                                                                  "pdf": {"CreationDate": None, "Producer": None}}[fmt])
     return result
 
 
-def figure(tests, sigma3, result):
-    """Stress-strain curves (left) and Mohr circles with the envelopes (right)."""
+def figure(tests, sigma3, result, tension=None):
+    """Stress-strain curves (left), Mohr circles with the envelopes (middle) and the Brazilian
+    test's platen force (right, when there is one)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, axes = plt.subplots(1, 3 if tension else 2, figsize=(16 if tension else 11, 4.2))
+    a, b = axes[0], axes[1]
     colours = plt.cm.viridis(np.linspace(0.1, 0.85, len(tests)))
     for s, t, c in zip(sigma3, tests, colours):
         a.plot(t["strain"], t["sigma1"] - t["sigma3"], color=c, label="sigma3 = %g" % s)
@@ -164,6 +202,14 @@ def figure(tests, sigma3, result):
     b.set_ylim(0, None)
     b.legend(fontsize=8, loc="upper left")
     b.set_title("Mohr circles (solid: peak, dashed: residual)")
+    if tension:
+        c = axes[2]
+        t = result["tensile_strength"]
+        c.plot(tension["strain"], tension["force"], color="C3")
+        c.axhline(t["peak_force"], color="k", lw=0.8, ls=":")
+        c.set_xlabel("shortening of the diameter / D [-]")
+        c.set_ylabel("platen force [m g]")
+        c.set_title("Brazilian test: sigma_t = 2 F / (pi D) = %.3g m g / d^2" % t["sigma_t"])
     fig.tight_layout()
     return fig
 
@@ -196,6 +242,9 @@ def main(argv=None):
     p.add_argument("--out", required=True, help="folder for the tests and the calibration")
     p.add_argument("--material", default="", help="the material to test (default: the first of [materials])")
     p.add_argument("--sigma3", default="2,5,10", help="confining stresses, three or more [m g / d^2] (default 2,5,10)")
+    p.add_argument("--tension-sigma3", type=float, default=0.5,
+                   help="consolidation stress of the Brazilian test's sample before the cut [m g / d^2] (default 0.5)")
+    p.add_argument("--no-tension", action="store_true", help="no Brazilian test")
     p.add_argument("--jobs", type=int, default=2, help="tests at a time (default 2)")
     p.add_argument("--set", action="append", dest="sets", help="KEY=VALUE for every test, as orogen run --set")
     a = p.parse_args(argv)
@@ -210,7 +259,10 @@ def main(argv=None):
             raise CalibrationError("--sigma3 %s: three or more distinct confining stresses > 0" % a.sigma3)
         if not 1 <= a.jobs <= 64:
             raise CalibrationError("--jobs %d: 1 to 64" % a.jobs)
-        result = calibrate(a.config, a.out, a.material, sigma3, a.jobs, parse_sets(a.sets))
+        if not (a.tension_sigma3 > 0 and math.isfinite(a.tension_sigma3)):
+            raise CalibrationError("--tension-sigma3 %s: a stress > 0" % a.tension_sigma3)
+        result = calibrate(a.config, a.out, a.material, sigma3, a.jobs, parse_sets(a.sets),
+                           None if a.no_tension else a.tension_sigma3)
     except CalibrationError as e:
         print("error: %s" % e, file=sys.stderr)
         return 2
@@ -225,6 +277,10 @@ def main(argv=None):
         print("%s: phi = %.2f +- %.2f deg, cohesion = %.3g +- %.2g, UCS = %.3g m g / d^2 (R^2 %.3f)"
               % (state, e["phi_deg"], e["phi_stderr_deg"], e["cohesion"], e["cohesion_stderr"], e["ucs"],
                  e["r_squared"]))
+    if result["tensile_strength"]:
+        t = result["tensile_strength"]
+        print("tension (Brazilian): sigma_t = %.3g m g / d^2 (%.3g rho g d), %d bonds broken"
+              % (t["sigma_t"], t["sigma_t_rho_g_d"], t["bonds_broken"]))
     print("written: %s" % os.path.join(a.out, "calibration.json"))
     return 0
 

@@ -254,6 +254,11 @@ const std::vector<KeySpec>& schema() {
       text("biaxial.material", "", {},
            "the material of the sample, a name of [materials] (docs/materials.md); empty: the configuration's "
            "units, or its first material; bonded once consolidated (orogen calibrate sets it)"),
+      text("biaxial.test", "compression", {"compression", "brazilian"},
+           "compression: the biaxial test (side walls hold sigma3, the top wall shortens the sample); "
+           "brazilian: the consolidated sample is cut to the disc inscribed in it, bonded, freed of its side "
+           "walls and squeezed across a diameter between the top and bottom walls as platens: its tensile "
+           "strength is 2 F_peak / (pi D) (docs/materials.md, Calibration)"),
       real("biaxial.servo_gain", 1.0, gt(0), le(2),
            "stress-controlled walls move at gain x stress error x d / (k_n dt): the fraction of the error "
            "removed per step against a rigid sample with one contact per d of wall; unstable "
@@ -319,7 +324,7 @@ const std::vector<LaterKey>& later_keys() {
     std::vector<LaterKey> out;
     for (const std::string_view name :
          {"contact.normal_force", "contact.damping", "contact.damping_rate", "singly.speed_bound",
-          "particles.placement", "biaxial.material", "singly.initial_slope", "wedge.basal_weakening",
+          "particles.placement", "biaxial.material", "singly.initial_slope", "biaxial.test", "wedge.basal_weakening",
           "wedge.basal_weakening_distance", "singly.basal_weakening", "singly.basal_weakening_distance"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.

@@ -129,7 +129,15 @@ bool BiaxialExperiment::advance(World& w) {
     return true;
   }
 
-  servo(w, latest_, false);
+  if (spec_.brazilian) {
+    const double force = 0.5 * (latest_[kTop] + latest_[kBottom]) * sample_width(w);
+    if (force > peak_force_) {
+      peak_force_ = force;
+      strain_at_peak_force_ = axial_strain(w);
+    }
+  } else {
+    servo(w, latest_, false);
+  }
   if (axial_strain(w) >= spec_.strain_end) {
     for (const auto name : kWallNames) w.set_wall_velocity(name, 0, 0);
     phase_ = Done;
@@ -138,10 +146,40 @@ bool BiaxialExperiment::advance(World& w) {
   return true;
 }
 
+double BiaxialExperiment::cut_specimen(World& w) {
+  const double left = w.wall("left").ax, right = w.wall("right").ax;
+  const double bottom = w.wall("bottom").ay, top = w.wall("top").ay;
+  const double cx = 0.5 * (left + right), cy = 0.5 * (bottom + top);
+  const double radius = 0.5 * std::min(right - left, top - bottom);
+  const Discs& d = w.discs;
+  std::vector<std::uint8_t> outside(d.size());
+  for (std::size_t i = 0; i < d.size(); ++i)
+    outside[i] = std::hypot(d.x[i] - cx, d.y[i] - cy) + d.radius[i] > radius ? 1 : 0;
+  w.remove(outside, RemovalReason::Other);
+  for (const auto name : {kWallNames[kLeft], kWallNames[kRight]}) {
+    w.set_wall_velocity(name, 0, 0);
+    w.enable_wall(name, false);
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    lo = std::min(lo, d.y[i] - d.radius[i]);
+    hi = std::max(hi, d.y[i] + d.radius[i]);
+  }
+  for (const auto& [name, y] : {std::pair{kWallNames[kBottom], lo}, std::pair{kWallNames[kTop], hi}}) {
+    const Wall& platen = w.wall(name);
+    w.set_wall_ends(name, platen.ax, y, platen.bx, y);
+    w.set_wall_velocity(name, 0, 0);
+  }
+  return hi - lo;
+}
+
 void BiaxialExperiment::start_shearing(World& w) {
-  h0_ = sample_height(w);
-  a0_ = sample_width(w) * h0_;
+  // The contacts of the consolidated sample (the Brazilian cut leaves the contact list to the
+  // next step).
   coordination_start_ = measure_contacts(w).contacts_per_disc;
+  // The Brazilian specimen is cut before it is bonded: no bond crosses the cut.
+  h0_ = spec_.brazilian ? cut_specimen(w) : sample_height(w);
+  a0_ = spec_.brazilian ? 0.25 * std::numbers::pi * h0_ * h0_ : sample_width(w) * h0_;
   solid_fraction_start_ = solid_area(w.discs) / a0_;
   w.set_wall_velocity("top", 0, -spec_.strain_rate * h0_);  // constant speed: the strain rate is nominal (of H0)
   // Named materials: the sample is the first (no units: the whole sample), bonded now, at the
@@ -173,7 +211,8 @@ BiaxialRow BiaxialExperiment::row(const World& w) const {
   r.sigma3 = 0.5 * (s[kLeft] + s[kRight]) / kUnitDiscMass;
   if (phase_ != Consolidating) {
     r.axial_strain = axial_strain(w);
-    r.vol_strain = sample_width(w) * sample_height(w) / a0_ - 1.0;
+    r.vol_strain = spec_.brazilian ? std::numeric_limits<double>::quiet_NaN()
+                                   : sample_width(w) * sample_height(w) / a0_ - 1.0;
   }
   return r;
 }
@@ -250,6 +289,7 @@ BiaxialResults BiaxialExperiment::results() const {
 
 std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
   if (rows_.empty()) return {};
+  if (spec_.brazilian) return brazilian_summary(w);
   const BiaxialResults r = results();
   // Inertial number of the residual flow, I = gamma_dot d sqrt(rho / p), with the shear rate
   // of an isochoric biaxial flow, 2 x the axial rate, and unit grain density.
@@ -293,6 +333,27 @@ std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
   return out;
 }
 
+// The Brazilian test (Hondros 1959; in 2-D, unit thickness): a disc of diameter D squeezed by a
+// line load F across a diameter is in tension across that diameter at 2 F / (pi D).
+std::vector<SummaryValue> BiaxialExperiment::brazilian_summary(const World& w) const {
+  const double strength = 2 * peak_force_ / (std::numbers::pi * h0_);  // code units: rho g d
+  return {{"tensile_strength", "2 F_peak / (pi D): the specimen's tensile strength [m g / d^2]",
+           strength / kUnitDiscMass},
+          {"tensile_strength_rho_g_d", "the same in the unit of the bond strengths [rho g d]", strength},
+          {"peak_force", "largest platen force (mean of the two platens) of any step [m g]",
+           peak_force_ / kUnitDiscMass},
+          {"axial_strain_peak", "shortening of the diameter at the peak force, relative to D [-]",
+           strain_at_peak_force_},
+          {"diameter", "specimen diameter D when loading began [d]", h0_},
+          {"bonds_broken", "bonds broken by the end [-]", static_cast<double>(w.bonds.breaks.size())},
+          {"bonds_intact", "bonds intact at the end [-]", static_cast<double>(w.bonds.size())},
+          {"sigma3", "consolidation stress before the cut [m g / d^2]", spec_.sigma3},
+          {"solid_fraction_start", "disc area / specimen area when loading began [-]", solid_fraction_start_},
+          {"coordination_start", "contacts per disc of the consolidated sample before the cut [-]",
+           coordination_start_},
+          {"n_discs", "number of discs [-]", static_cast<double>(w.discs.size())}};
+}
+
 void BiaxialExperiment::save(ArchiveWriter& out) const {
   state_fields(*this, ArchiveSaver(out));
   displacements_.save(out, "biaxial.disp");
@@ -309,6 +370,9 @@ std::string BiaxialExperiment::status(const World& w) const {
   if (phase_ == Consolidating)
     return fmt::format("consolidating sigma3 {:.3g} KE/disc {:.2e}", s3, mean_kinetic_energy(w));
   const double s1 = 0.5 * (s[kTop] + s[kBottom]) / kUnitDiscMass;
+  if (spec_.brazilian)
+    return fmt::format("splitting strain {:.4f} platen force {:.3g} m g (peak {:.3g})", axial_strain(w),
+                       s1 * sample_width(w), peak_force_ / kUnitDiscMass);
   return fmt::format("shearing strain {:.4f} phi {:.1f} deg sigma3 {:.3g}", axial_strain(w),
                      mobilised_friction(s1, s3) * kDegPerRad, s3);
 }
@@ -331,6 +395,7 @@ std::unique_ptr<Experiment> make_biaxial_experiment(const Config& c) {
   s.strain_end = c.get_float("biaxial.strain_end");
   s.outputs = c.get_int32("biaxial.outputs");
   s.servo_gain = c.get_float("biaxial.servo_gain");
+  s.brazilian = c.get_string("biaxial.test") == "brazilian";
   if (const std::string& name = c.get_string("biaxial.material"); !name.empty()) {
     std::string names;
     for (std::size_t k = 0; k < c.materials().size(); ++k) {

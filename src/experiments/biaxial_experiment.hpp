@@ -6,7 +6,9 @@
 // without gravity, first consolidated isotropically to the confining stress sigma_3, then
 // shortened by the top wall at a constant slow speed while the side walls hold sigma_3. The
 // mobilised friction angle asin((s1 - s3) / (s1 + s3)) gives the bulk friction at its peak and
-// in the residual state, and from them the critical taper of a dry wedge.
+// in the residual state, and from them the critical taper of a dry wedge. The Brazilian variant
+// (biaxial.test) measures a bonded material's tensile strength instead: the consolidated sample
+// cut to its inscribed disc and squeezed across a diameter between two platens.
 #include <memory>
 
 #include "analysis/biaxial_results.hpp"
@@ -27,6 +29,7 @@ struct BiaxialSpec {
   std::ptrdiff_t material = -1;    // the sample's material (index into the materials); -1: the units
   double tolerance = 0.01;         // consolidated: every wall stress within this of sigma3
   double residual_from = 2.0 / 3;  // residual state: beyond this fraction of strain_end
+  bool brazilian = false;          // the Brazilian test (biaxial.test)
   PackingSpec packing;
   SettleSpec settle;
 };
@@ -71,9 +74,13 @@ class BiaxialExperiment final : public Experiment {
   // Sets the velocity of each servoed wall from its stress error.
   void servo(World& world, const std::array<double, 4>& stress, bool top_too) const;
   void start_shearing(World& world);
+  // The Brazilian test's specimen: the disc inscribed in the sample (diameter D, returned), the
+  // side walls off, the top and bottom walls touching it as platens.
+  double cut_specimen(World& world);
   // Stresses averaged over the steps since the last output (the latest ones if none).
   std::array<double, 4> mean_stresses() const;
   BiaxialRow row(const World& world) const;
+  std::vector<SummaryValue> brazilian_summary(const World& world) const;
   // The checkpointed state, each field once with its key, for save() and load()
   // (io/archive_fields.hpp); the displacement tracker saves itself.
   template <class Self, class F>
@@ -94,6 +101,10 @@ class BiaxialExperiment final : public Experiment {
     f("biaxial.rows.sigma3", column(self.rows_, &BiaxialRow::sigma3));
     f("biaxial.coordination_start", self.coordination_start_);
     f("biaxial.solid_fraction_start", self.solid_fraction_start_);
+    if (self.spec_.brazilian) {
+      f("biaxial.peak_force", self.peak_force_);
+      f("biaxial.strain_at_peak_force", self.strain_at_peak_force_);
+    }
   }
 
   BiaxialSpec spec_;
@@ -108,6 +119,9 @@ class BiaxialExperiment final : public Experiment {
   std::uint64_t check_steps_ = 0;
   std::vector<BiaxialRow> rows_;       // output rows while shearing, for the summary
   double coordination_start_ = 0, solid_fraction_start_ = 0;
+  // The Brazilian test: the largest platen force of any step (mean of the two platens), and the
+  // axial strain (of the diameter) it came at.
+  double peak_force_ = 0, strain_at_peak_force_ = 0;
   DisplacementTracker displacements_;
 };
 

@@ -95,11 +95,20 @@ class CalibrateCommand(unittest.TestCase):
             self.assertIn('material = "rock"', text)
             self.assertIn("sigma3 = %s.0" % s, text)
         self.assertIn("peak: phi =", self.r.stdout)
+        # The Brazilian test: a bonded material's tensile strength, positive and below its bonds'.
+        t = result["tensile_strength"]
+        self.assertTrue(0 < t["sigma_t_rho_g_d"] < 5, t)
+        self.assertAlmostEqual(t["sigma_t"] * math.pi / 4, t["sigma_t_rho_g_d"])
+        with open(os.path.join(self.out, "brazilian", "config.toml")) as f:
+            text = f.read()
+        self.assertIn('test = "brazilian"', text)
+        self.assertIn("tension (Brazilian): sigma_t =", self.r.stdout)
 
     def test_bad_input_is_named(self):
         cases = [(["--sigma3", "2,5"], "three or more"),
                  (["--sigma3", "2,x,5"], "--sigma3 2,x,5"),
-                 (["--material", "granite"], "biaxial.material")]
+                 (["--material", "granite"], "biaxial.material"),
+                 (["--tension-sigma3", "-1"], "--tension-sigma3")]
         for args, expect in cases:
             out = os.path.join(self.dir, "bad")
             r = subprocess.run(module_command("orogen.calibrate", self.config, "--out", out, *args),
