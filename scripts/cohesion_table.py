@@ -1,16 +1,20 @@
 #!/usr/bin/python3
 """The cohesion series' table (docs/cohesion-evidence.md): for each run of a sweep over a bond
-strength, the wedge at its end (height, tapers), its faults over the last quarter of the run
-(orogen.analysis.faults: run it first in each run), and its bonds.
+strength (and seeds), the wedge at its end (height, tapers), its faults over the last quarter of
+the run (orogen.analysis.faults: run it first in each run), and its bonds. Doubly-vergent wedges
+(S, H, alpha_fit, beta_fit, Dp) and singly-vergent ones (shortening, height, taper, width: in the
+columns of H, alpha, Dp; no retro taper) alike; the strength and the seed are read from each
+run's config.toml (the first material's bond_tensile_strength).
 
-    python3 -m orogen.analysis.faults RUN      (each run of the sweep)
-    scripts/cohesion_table.py runs/cohesion    (a Markdown table on standard output)
+    python3 -m orogen.analysis.faults RUN            (each run of the sweep)
+    scripts/cohesion_table.py runs/cohesion          (a Markdown table on standard output)
 """
 
 import glob
 import math
 import os
 import sys
+import tomllib
 
 import numpy as np
 
@@ -18,13 +22,19 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from orogen.tables import read_rows, read_table  # noqa: E402
 
 
-def strength_of(run):
-    name = os.path.basename(run.rstrip("/"))
-    return float(name.split("=")[-1])
+def strength_and_seed(run):
+    with open(os.path.join(run, "config.toml"), "rb") as f:
+        config = tomllib.load(f)
+    materials = config.get("materials", {})
+    strength = next(iter(materials.values()))["bond_tensile_strength"] if materials else 0.0
+    return float(strength), int(config["run"]["seed"])
 
 
 def row(run):
     cols, _ = read_table(os.path.join(run, "series.csv"))
+    if "shortening" in cols:  # singly-vergent: its columns under the doubly-vergent names
+        cols = {"S": cols["shortening"], "H": cols["height"], "alpha_fit": cols["taper"],
+                "beta_fit": np.full(len(cols["taper"]), np.nan), "Dp": cols["width"]}
     last = -1
     s_end = cols["S"][last]
     late = cols["S"] >= 0.75 * s_end
@@ -45,7 +55,8 @@ def row(run):
                     intact = int(line.split()[2])
                 elif line.endswith(",tension\n") or line.endswith(",shear\n"):
                     breaks += 1
-    return {"strength": strength_of(run), "H": cols["H"][last], "alpha": float(np.nanmean(cols["alpha_fit"][late])),
+    strength, seed = strength_and_seed(run)
+    return {"strength": strength, "seed": seed, "H": cols["H"][last], "alpha": float(np.nanmean(cols["alpha_fit"][late])),
             "beta": float(np.nanmean(cols["beta_fit"][late])), "Dp": cols["Dp"][last],
             "fore": len(fore) / n_out, "back": len(back) / n_out,
             "fore_dip": float(np.mean([float(f["dip_deg"]) for f in fore])) if fore else math.nan,
@@ -54,17 +65,33 @@ def row(run):
 
 
 def main(sweep):
-    runs = sorted(glob.glob(os.path.join(sweep, "runs", "*")), key=strength_of)
-    print("| bond strength [rho g d] | H [h0] | pro taper alpha_fit [deg] | retro taper beta_fit [deg] | Dp [h0] "
-          "| pro forethrusts per output | pro backthrusts per output | forethrust dip [deg] | backthrust dip [deg] "
-          "| forethrust spacing [h0] | bonds broken / made |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
-    for run in runs:
-        r = row(run)
+    runs = sorted((os.path.dirname(p) for p in glob.glob(os.path.join(sweep, "runs", "*", "series.csv"))),
+                  key=strength_and_seed)
+    print("| bond strength [rho g d] | seed | H [h0] | pro taper alpha_fit [deg] | retro taper beta_fit [deg] "
+          "| Dp or width [h0] | pro forethrusts per output | pro backthrusts per output | forethrust dip [deg] "
+          "| backthrust dip [deg] | forethrust spacing [h0] | bonds broken / made |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    rows = [row(run) for run in runs]
+    for r in rows:
         made = r["breaks"] + r["intact"]
-        print("| %g | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.0f | %.0f | %.2f | %s |" % (
-            r["strength"], r["H"], r["alpha"], r["beta"], r["Dp"], r["fore"], r["back"], r["fore_dip"],
+        print("| %g | %d | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.0f | %.0f | %.2f | %s |" % (
+            r["strength"], r["seed"], r["H"], r["alpha"], r["beta"], r["Dp"], r["fore"], r["back"], r["fore_dip"],
             r["back_dip"], r["spacing"], "%d / %d" % (r["breaks"], made) if made else "no bonds"))
+    strengths = sorted({r["strength"] for r in rows})
+    if len(rows) > len(strengths):  # seeds: each strength's mean and the spread between seeds
+        print("\n| bond strength [rho g d] | seeds | H [h0] | taper [deg] | forethrusts per output "
+              "| forethrust dip [deg] | forethrust spacing [h0] |")
+        print("|---|---|---|---|---|---|---|")
+        for strength in strengths:
+            group = [r for r in rows if r["strength"] == strength]
+
+            def both(key, fmt):
+                v = np.array([r[key] for r in group], float)
+                v = v[np.isfinite(v)]
+                return (fmt + " +- " + fmt) % (v.mean(), v.std(ddof=1) if len(v) > 1 else 0.0) if len(v) else "-"
+            print("| %g | %d | %s | %s | %s | %s | %s |" % (
+                strength, len(group), both("H", "%.2f"), both("alpha", "%.1f"), both("fore", "%.1f"),
+                both("fore_dip", "%.0f"), both("spacing", "%.2f")))
 
 
 if __name__ == "__main__":

@@ -41,6 +41,7 @@ from pathlib import Path
 import numpy as np
 from scipy import stats
 
+from .analysis.calibrated_taper import material_keys
 from .atomic import save_figure, write_text
 from .config import ConfigError, load_config
 from .tables import read_table
@@ -146,7 +147,11 @@ def calibrate(config, out, material="", sigma3=(2.0, 5.0, 10.0), jobs=2, sets=No
               "residual": fit_envelope([t["residual"]["sigma3"] for t in tests],
                                        [t["residual"]["sigma1"] for t in tests]),
               "units": "stresses in m g / d^2 (m = pi / 4), as biaxial.sigma3; *_rho_g_d in rho g d",
-              "tensile_strength": None}
+              "tensile_strength": None,
+              # What makes the material, so that a wedge of it finds this calibration
+              # (orogen.analysis.calibrated_taper).
+              "material_keys": material_keys(tomllib.loads(load_config(config, jobs_list[0][2]).to_toml()),
+                                             material)}
     if tension is not None:
         t = tension["summary"]
         result["tensile_strength"] = {

@@ -22,7 +22,7 @@ struct WallContactForce {
   double delta = 0;       // overlap
   double fn = 0, ft = 0;  // normal and tangential (along t = n rotated +90 degrees) force on the disc
   double xi = 0;          // history after the step (0 when apart or smooth)
-  double slip = 0;        // sliding in this step on the Coulomb limit (0 off it): a weakening wall's
+  double slip = 0;        // sliding in this step on the Coulomb limit (0 off it), for a weakening wall
 };
 
 // What the law needs of a wall, worked out once per wall and force pass rather than per

@@ -80,6 +80,17 @@ class Picker(unittest.TestCase):
         self.assertAlmostEqual(gaps[inner], 0.8, delta=0.15)  # to the next one out (+x)
         self.assertTrue(math.isnan(gaps[1 - inner]))
 
+    def test_a_singly_vergent_wedge_has_its_core_at_the_backstop(self):
+        """A fault right of x = 0 deepening towards +x: a retro backthrust about a doubly-vergent
+        wedge's S-point, a forethrust of a singly-vergent wedge whose backstop stands at +x."""
+        x, y = self.x, self.y
+        strain = self.background + band_strain(x, y, 2.5, 30, True, 1.0)
+        (doubly,) = faults.pick_faults(x, y, strain, d_h0=0.1, seed=1)
+        self.assertEqual((doubly["side"], doubly["kind"]), ("retro", "backthrust"))
+        walls = np.array([[-8.0, 0.0, 8.0, 0.0], [-7.0, 0.0, -7.0, 3.0], [5.2, 0.0, 5.2, 3.0]])
+        (singly,) = faults.pick_faults(x, y, strain, d_h0=0.1, seed=1, core_x=faults.backstop_x(walls))
+        self.assertEqual((singly["side"], singly["kind"]), ("pro", "forethrust"))
+
 
 class Command(unittest.TestCase):
     def test_bad_input_is_named(self):

@@ -154,6 +154,32 @@ class WedgeChartsTest(unittest.TestCase):
         self.assertEqual(run["retro_onset_step"], 31000)
         self.assertEqual(run["retro_onset_output"], 31)
 
+    def test_critical_tapers_of_the_calibrated_material(self):
+        """A run of the default material finds the shipped calibration; its critical tapers are
+        Dahlen's for the calibrated angles and the run's basal friction. A run of another
+        contact friction finds none, and says why; an explicit calibration of it is used."""
+        from orogen.analysis import calibrated_taper as ct, surface
+        default = ct.load_calibration(ct.DEFAULT_CALIBRATION)
+        from orogen.config import resolved_toml
+        config_text = resolved_toml()  # the default configuration, as a run's config.toml holds it
+        with open(os.path.join(self.run_dir, "config.toml"), "w") as f:
+            f.write(config_text)
+        run = wc.make_charts([self.run_dir], self.out)["runs"][0]["critical_taper"]
+        self.assertEqual(run["calibration"], "calibrated default material")
+        for side, mu_b in (("pro", 0.2), ("retro", 0.4)):
+            for state in ("peak", "residual"):
+                self.assertAlmostEqual(run[side][state], surface.critical_taper_deg(default[state]["phi_deg"], mu_b))
+        self.assertTrue(0 < run["pro"]["peak"] < 20, run)
+        with open(os.path.join(self.run_dir, "config.toml"), "w") as f:
+            f.write(config_text.replace("\nmu = 0.3\n", "\nmu = 0.5\n", 1))
+        run = wc.make_charts([self.run_dir], self.out)["runs"][0]["critical_taper"]
+        self.assertIsNone(run["calibration"])
+        self.assertIn("contact.mu", run["why"])
+        other = dict(default, material_keys=dict(default["material_keys"],
+                                                 contact=dict(default["material_keys"]["contact"], mu=0.5)))
+        run = wc.make_charts([self.run_dir], self.out, calibration=other)["runs"][0]["critical_taper"]
+        self.assertEqual(run["calibration"], "calibrated default material")
+
     def test_topography_reads_complete_outputs_only(self):
         if h5py is None:
             self.skipTest("h5py not installed")

@@ -17,8 +17,9 @@ scattered ones); the refitted run must hold more sheared discs than the region's
 would put in its band by chance with probability SIGNIFICANCE (binomial); its discs are fitted again by a
 strain-weighted principal axis and removed, until the best run is shorter than `min_length`
 h0. A fault dips towards where its plane deepens: one that deepens towards the wedge's core
-(the S-point of a doubly-vergent wedge: x = 0) is a forethrust of its side (its hanging wall
-moves out, towards the foreland), one that deepens away from it a backthrust. It is active
+(the S-point of a doubly-vergent wedge: x = 0; the backstop of a singly-vergent one, whose
+faults are all of its "pro" side) is a forethrust of its side (its hanging wall moves out,
+towards the foreland), one that deepens away from it a backthrust. It is active
 when its discs' mean strain over the last output alone is at least the threshold of that
 increment. Lines flatter than MIN_DIP_DEG (bedding-parallel shear) are not reported, and only
 discs within WEDGE_MARGIN of the wedge (where the surface stands WEDGE_RISE above the layer)
@@ -204,7 +205,7 @@ def run_faults(outputs, window=3, threshold=0.25, min_length=0.5):
         d_h0 = 1.0 / now["h0"]
         total = shear_strain(then, now)
         recent = shear_strain(last, now)
-        faults = pick_faults(now["x"], now["y"], total, d_h0, threshold, min_length, seed=k)
+        faults = pick_faults(now["x"], now["y"], total, d_h0, threshold, min_length, core_x=now["core_x"], seed=k)
         _, recent_level = sheared(recent, threshold)
         for f, spacing in zip(faults, spacings(faults)):
             top, bottom = sorted(f["ends"], key=lambda e: -e[1])
@@ -224,9 +225,17 @@ def write_faults(run, rows):
     write_text(os.path.join(run, "faults.csv"), "\n".join(lines) + "\n")
 
 
+def backstop_x(walls):
+    """A singly-vergent wedge's core: its backstop, the vertical wall furthest along +x (the
+    backstop pushes towards -x; the far wall stands at 0)."""
+    vertical = walls[np.isclose(walls[:, 0], walls[:, 2])]
+    return float(vertical[:, 0].max()) if len(vertical) else math.inf
+
+
 def read_outputs(run):
-    """Every complete output of a wedge run's snapshots.h5: x, y (h0, x from the S-point), id,
-    h0 (d), S and the output number."""
+    """Every complete output of a wedge run's snapshots.h5 (doubly- or singly-vergent): x, y
+    (h0; x from the S-point in a doubly-vergent wedge), id, h0 (d), S (a singly-vergent wedge's
+    shortening in h0), the core's x (core_x, h0) and the output number."""
     from ..frames import Snapshots
 
     path = os.path.join(run, "snapshots.h5")
@@ -235,12 +244,15 @@ def read_outputs(run):
     try:
         with Snapshots(path) as snaps:
             h0 = float(snaps.attrs.get("h0", 0.0))
-            if snaps.attrs.get("experiment", "") != "wedge" or not h0 > 0:
-                raise FaultError("%s: not a wedge run (faults are picked in wedges)" % run)
+            experiment = snaps.attrs.get("experiment", "")
+            if experiment not in ("wedge", "singly_vergent") or not h0 > 0:
+                raise FaultError("%s: not a wedge run (faults are picked in doubly- and singly-vergent wedges)" % run)
             outputs = []
             for k in range(len(snaps)):
                 f = snaps.frame(k, ("x", "y", "id"))
-                outputs.append({"x": f["x"] / h0, "y": f["y"] / h0, "id": f["id"], "h0": h0,
+                singly = experiment == "singly_vergent"
+                core_x = backstop_x(f["walls"]) / h0 if singly else 0.0
+                outputs.append({"x": f["x"] / h0, "y": f["y"] / h0, "id": f["id"], "h0": h0, "core_x": core_x,
                                 "S": float(f["attrs"].get("S", np.nan)), "output": f["output"]})
             return outputs
     except (OSError, KeyError, ValueError) as e:

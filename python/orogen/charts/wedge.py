@@ -3,13 +3,17 @@
 
 Usage:
     python3 -m orogen.charts.wedge RUN_DIR [RUN_DIR ...] --out OUTDIR [--labels a,b]
+                                   [--calibration calibration.json]
 
 Each RUN_DIR is the folder of an `orogen run --set run.experiment=wedge` run: it must hold
 series.csv and, for the topography chart, snapshots.h5. Writes into OUTDIR (each file
 atomically: a temporary file in OUTDIR, then os.replace):
 
     height_peak.png  H/h0 and x_T/h0 against S, Simple Model, power-law fit (Figs 4.6, 4.9, 4.11)
-    tapers.png       alpha, beta (alpha_fit, beta_fit dashed) against S (Figs 4.7, 4.12)
+    tapers.png       alpha, beta (alpha_fit, beta_fit dashed) against S (Figs 4.7, 4.12), with the
+                     critical tapers of the run's calibrated material on its bases (shaded
+                     between the residual and the peak friction; --calibration, or the shipped
+                     calibration of the default material)
     fronts.png       Dp, Mp, Dr, Mr against S (Fig 5.14)
     topography.png   the upper surface through time with the fronts (Fig 5.13)
     slip.png         fraction of basal contacts at the Coulomb limit against S (stages of growth)
@@ -30,6 +34,7 @@ import json
 import math
 import os
 import sys
+import tomllib
 
 import numpy as np
 import matplotlib
@@ -39,7 +44,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
 from .. import atomic, folders, tables  # noqa: E402
-from ..analysis import surface  # noqa: E402
+from ..analysis import calibrated_taper, surface  # noqa: E402
 from ..analysis.powerlaw import power_law_fit, simple_model_height  # noqa: E402,F401 (shared fits)
 
 FIT_S_MIN = 0.5          # power-law fit of H over S > FIT_S_MIN (and H > 0)
@@ -189,6 +194,7 @@ def summarize(run):
         "retro_onset_step": onset_step,
         "retro_onset_output": onset_output,
         "retro_onset_S": onset_s,
+        "critical_taper": run["critical"],
     }
 
 
@@ -288,6 +294,12 @@ def chart_tapers(runs, path):
             m = late_mean(series, name)
             if np.isfinite(m):
                 ax.axhline(m, color=c, lw=0.8, ls=":", label="%s: late mean %.1f°" % (run["label"], m))
+            side = run["critical"].get("pro" if name == "alpha" else "retro")
+            if side and np.isfinite(side["peak"]) and np.isfinite(side["residual"]):
+                lo, hi = sorted((side["peak"], side["residual"]))
+                ax.axhspan(lo, hi, color=c, alpha=0.12, lw=0,
+                           label="%s: critical taper %.1f-%.1f° (%s, mu_b %.2g)"
+                           % (run["label"], lo, hi, run["critical"]["calibration"], side["mu_b"]))
         if s_limits(runs):
             ax.set_xlim(*s_limits(runs))
         ax.set(xlabel="S (convergence / h0)", ylabel="angle [deg]", title=title)
@@ -527,7 +539,25 @@ def unique_labels(dirs, labels):
     return out
 
 
-def load_runs(dirs, labels):
+def critical(d, calibration):
+    """The critical tapers of the run's bases for its calibrated material, or why there are none."""
+    path = os.path.join(d, "config.toml")
+    if not os.path.isfile(path):
+        return {"calibration": None, "why": "no config.toml"}
+    with open(path, "rb") as f:
+        config = tomllib.load(f)
+    cal, why = calibrated_taper.calibration_for(config, calibration)
+    if cal is None:
+        return {"calibration": None, "why": why}
+    wedge = config.get("wedge", {})
+    out = {"calibration": why, "phi_peak_deg": cal["peak"]["phi_deg"], "phi_residual_deg": cal["residual"]["phi_deg"]}
+    for side, key in (("pro", "mu_bp"), ("retro", "mu_br")):
+        if key in wedge:
+            out[side] = dict(calibrated_taper.critical_tapers(cal, wedge[key]), mu_b=wedge[key])
+    return out
+
+
+def load_runs(dirs, labels, calibration=None):
     runs = []
     colors = run_colors(len(dirs))
     for d, label, color in zip(dirs, unique_labels(dirs, labels), colors):
@@ -540,6 +570,7 @@ def load_runs(dirs, labels):
         h5 = os.path.join(d, "snapshots.h5")
         runs.append(dict(dir=os.path.abspath(d), label=label, color=color, series=series,
                          descriptions=desc, h5=h5 if os.path.isfile(h5) else None,
+                         critical=critical(d, calibration),
                          fit=power_law_fit(series["S"], series["H"])))
     return runs
 
@@ -553,10 +584,11 @@ CHARTS = (
 )
 
 
-def make_charts(dirs, out_dir, labels=None):
-    """Draws every chart and summary.json for the runs in `dirs` into out_dir; returns the summary."""
+def make_charts(dirs, out_dir, labels=None, calibration=None):
+    """Draws every chart and summary.json for the runs in `dirs` into out_dir; returns the summary.
+    calibration: a calibration.json of the runs' material (default: the shipped one, where it fits)."""
     os.makedirs(out_dir, exist_ok=True)
-    runs = load_runs(dirs, labels)
+    runs = load_runs(dirs, labels, calibration)
     with np.errstate(invalid="ignore", divide="ignore"):
         for name, draw in CHARTS:
             draw(runs, os.path.join(out_dir, name))
@@ -570,8 +602,13 @@ def main(argv=None):
     p.add_argument("runs", nargs="+", metavar="RUN_DIR", help="folder of an orogen wedge run")
     p.add_argument("--out", required=True, metavar="OUTDIR", help="folder for the PNGs and summary.json")
     p.add_argument("--labels", default=None, help="comma-separated run labels (default: folder names)")
+    p.add_argument("--calibration", default=None, metavar="JSON",
+                   help="calibration.json of the runs' material (orogen calibrate) for the critical tapers; "
+                        "default: the shipped calibration of the default material, where the runs are of it")
     args = p.parse_args(argv)
-    summary = make_charts(args.runs, args.out, args.labels)
+    if args.calibration is not None and not os.path.isfile(args.calibration):
+        raise SystemExit("error: --calibration %s: no such file" % args.calibration)
+    summary = make_charts(args.runs, args.out, args.labels, args.calibration)
     for r in summary["runs"]:
         b = "b = %.3f ± %.3f (R² %.3f)" % (r["b"], r["b_se"], r["r2"]) if r["b"] is not None else "no fit"
         print("%s: S = %s, H = %s, %s, retro onset step %s" % (
