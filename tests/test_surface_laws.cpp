@@ -1,0 +1,158 @@
+// The surface laws of issue 40 (src/surface/profile_laws.*) against their analytic solutions:
+// a diffusing step is the error function, the nonlinear law is the linear one on gentle slopes
+// and holds a steady hillslope under uplift at Roering's flux, a stream-power river under
+// uniform uplift reaches the steady profile U = K Q^m S^n, and mass is conserved to round-off.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "surface/profile_laws.hpp"
+
+namespace orogen {
+namespace {
+
+double total(const std::vector<double>& h) { return std::accumulate(h.begin(), h.end(), 0.0); }
+
+std::vector<double> step_profile(std::size_t n, double dx, double amplitude) {
+  std::vector<double> h(n);
+  for (std::size_t j = 0; j < n; ++j) h[j] = (-50 + (static_cast<double>(j) + 0.5) * dx) < 0 ? amplitude : 0.0;
+  return h;
+}
+
+TEST(SurfaceLaws, ALinearlyDiffusingStepIsTheErrorFunctionAndKeepsItsArea) {
+  const double dx = 0.5, kappa = 1, dt = 0.02, t = 25;
+  std::vector<double> h = step_profile(200, dx, 1.0);
+  const double area = total(h);
+  for (int k = 0; k < static_cast<int>(t / dt); ++k) diffuse_linear(h, dx, kappa, dt, {});
+  double worst = 0;
+  for (std::size_t j = 0; j < h.size(); ++j) {
+    const double x = -50 + (static_cast<double>(j) + 0.5) * dx;
+    worst = std::max(worst, std::fabs(h[j] - 0.5 * std::erfc(x / (2 * std::sqrt(kappa * t)))));
+  }
+  EXPECT_LT(worst, 5e-3);  // backward Euler, O(dt) + O(dx^2)
+  EXPECT_NEAR(total(h), area, 1e-12 * area);
+}
+
+TEST(SurfaceLaws, NonlinearDiffusionIsLinearOnGentleSlopes) {
+  const double dx = 0.5, kappa = 1, dt = 0.5, t = 25;
+  std::vector<double> lin = step_profile(200, dx, 0.01), non = lin;
+  const double area = total(non);
+  for (int k = 0; k < static_cast<int>(t / dt); ++k) {
+    diffuse_linear(lin, dx, kappa, dt, {});
+    diffuse_nonlinear(non, dx, kappa, 1.0, dt, {});
+  }
+  double worst = 0;
+  for (std::size_t j = 0; j < lin.size(); ++j) worst = std::max(worst, std::fabs(lin[j] - non[j]));
+  EXPECT_LT(worst, 2e-4);  // 2 % of the step: the two time schemes apart
+  EXPECT_NEAR(total(non), area, 1e-12 * area);
+}
+
+// Under uplift U, a hillslope draining to base level at both ends stands steady when each face
+// carries the uplift of the columns above it: q = U x, and Roering's law then sets its slope,
+// S = (sqrt(kappa^2 + 4 (q / Sc)^2) - kappa) / (2 q / Sc^2). Slopes up to half of Sc: the law's
+// nonlinear range.
+TEST(SurfaceLaws, ANonlinearHillslopeUnderUpliftStandsAtRoeringsSlope) {
+  // Small steps: the uplift is added between them (operator splitting), which the open ends feel.
+  const double dx = 1, kappa = 1, sc = 0.6, uplift = 0.4 / 19, dt = 0.05;
+  const std::size_t n = 40;
+  std::vector<double> h(n, 0.0);
+  const ProfileEnds open{true, 0.0};
+  for (int k = 0; k < 200000; ++k) {
+    for (double& v : h) v += uplift * dt;
+    diffuse_nonlinear(h, dx, kappa, sc, dt, open);
+  }
+  // The divide lies between columns n/2 - 1 and n/2; face k (between columns k - 1 and k) of the
+  // left half drains the n/2 - k columns between it and the divide.
+  for (std::size_t k = 1; k < n / 2; k += 3) {
+    const double q = uplift * dx * static_cast<double>(n / 2 - k);
+    const double s = (std::sqrt(kappa * kappa + 4 * q * q / (sc * sc)) - kappa) / (2 * q / (sc * sc));
+    const double measured = (h[k] - h[k - 1]) / dx;
+    EXPECT_NEAR(measured, s, 3e-3 * s) << "face " << k;
+  }
+}
+
+struct River {
+  std::vector<double> h, discharge;
+};
+
+River steady_river(const StreamPower& law, double uplift, const std::vector<double>& rain, double dx) {
+  River r{std::vector<double>(rain.size(), 0.0), {}};
+  const ProfileEnds open{true, 0.0};
+  for (int k = 0; k < 200000; ++k) {
+    const std::vector<double> before = r.h;
+    for (double& v : r.h) v += uplift * 50.0;
+    r.discharge = erode_fluvial(r.h, dx, law, rain, 50.0, open);
+    double change = 0;
+    for (std::size_t j = 0; j < r.h.size(); ++j) change = std::max(change, std::fabs(r.h[j] - before[j]));
+    if (change < 1e-13) break;
+  }
+  return r;
+}
+
+// The receiver of column j at steady state: its lower neighbour, or the base level (0) beyond the end.
+double drop_to_receiver(const std::vector<double>& h, std::size_t j) {
+  const double left = j > 0 ? h[j - 1] : 0.0, right = j + 1 < h.size() ? h[j + 1] : 0.0;
+  return h[j] - std::min(left, right);
+}
+
+TEST(SurfaceLaws, AStreamPowerRiverUnderUpliftReachesTheSteadyProfile) {
+  const double dx = 1, uplift = 1e-3;
+  const std::size_t n = 41;
+  const std::vector<double> rain(n, 1.0);
+  for (const double slope_exponent : {1.0, 2.0}) {
+    SCOPED_TRACE(slope_exponent);
+    const StreamPower law{0.01, 0.5, slope_exponent};
+    const River r = steady_river(law, uplift, rain, dx);
+    const auto divide = static_cast<std::size_t>(std::max_element(r.h.begin(), r.h.end()) - r.h.begin());
+    EXPECT_EQ(divide, n / 2);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == divide) continue;
+      // Discharge: the columns from the divide down to this one (the divide drains to its left:
+      // of two equal drops, the left neighbour's is taken).
+      const double columns = static_cast<double>(j < divide ? divide - j + 1 : j - divide);
+      EXPECT_DOUBLE_EQ(r.discharge[j], columns * dx) << j;
+      const double slope = drop_to_receiver(r.h, j) / dx;
+      EXPECT_NEAR(law.K * std::pow(r.discharge[j], law.m) * std::pow(slope, law.n), uplift, 1e-9) << j;
+    }
+  }
+}
+
+TEST(SurfaceLaws, OrographicRainMakesTheWindwardFlankGentler) {
+  const double dx = 1, uplift = 1e-3;
+  const std::size_t n = 41;
+  std::vector<double> flat(n, 0.0);
+  flat[n / 2] = 1;
+  const std::vector<double> rain = precipitation_pattern(flat, 1.0, 4.0, true);
+  EXPECT_EQ(rain.front(), 4.0);
+  EXPECT_EQ(rain.back(), 1.0);
+  const StreamPower law{0.01, 0.5, 1.0};
+  const River r = steady_river(law, uplift, rain, dx);
+  // Each column carries the uplift at its own discharge, U = K Q^m S: four times the rain on the
+  // windward flank, gentler slopes there (the divide moves to the leeward side).
+  const auto divide = static_cast<std::size_t>(std::max_element(r.h.begin(), r.h.end()) - r.h.begin());
+  EXPECT_GT(divide, n / 2);
+  double windward = 0, leeward = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (j == divide) continue;
+    const double slope = drop_to_receiver(r.h, j) / dx;
+    EXPECT_NEAR(law.K * std::sqrt(r.discharge[j]) * slope, uplift, 1e-9) << j;
+    (j < divide ? windward : leeward) += slope / static_cast<double>(j < divide ? divide : n - 1 - divide);
+  }
+  EXPECT_LT(windward, 0.8 * leeward);
+}
+
+TEST(SurfaceLaws, TheImplicitRiverNeverCutsBelowItsReceiver) {
+  std::vector<double> h = {0.5, 3.0, 7.0, 2.0, 0.2};
+  const ProfileEnds open{true, 0.0};
+  erode_fluvial(h, 1.0, {1.0, 0.5, 1.0}, std::vector<double>(h.size(), 1.0), 1e6, open);
+  for (double v : h) {
+    EXPECT_GE(v, 0.0);
+    EXPECT_LT(v, 1e-3);  // an enormous step: everything down to base level
+  }
+}
+
+}  // namespace
+}  // namespace orogen
