@@ -22,6 +22,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from orogen.tables import read_rows, read_table  # noqa: E402
 
 
+def finite_mean(values):
+    v = np.asarray(values, float)
+    v = v[np.isfinite(v)]
+    return float(v.mean()) if len(v) else math.nan
+
+
 def strength_and_seed(run):
     with open(os.path.join(run, "config.toml"), "rb") as f:
         config = tomllib.load(f)
@@ -57,7 +63,7 @@ def row(run):
                     breaks += 1
     strength, seed = strength_and_seed(run)
     return {"strength": strength, "seed": seed, "H": cols["H"][last], "alpha": float(np.nanmean(cols["alpha_fit"][late])),
-            "beta": float(np.nanmean(cols["beta_fit"][late])), "Dp": cols["Dp"][last],
+            "beta": finite_mean(cols["beta_fit"][late]), "Dp": cols["Dp"][last],
             "fore": len(fore) / n_out, "back": len(back) / n_out,
             "fore_dip": float(np.mean([float(f["dip_deg"]) for f in fore])) if fore else math.nan,
             "back_dip": float(np.mean([float(f["dip_deg"]) for f in back])) if back else math.nan,
