@@ -232,17 +232,20 @@ constexpr std::array kSeries = {
     Entry{"phase", "-", "0 consolidating isotropically to sigma3, 1 shearing, 2 done", &BiaxialSample::phase},
     Entry{"axial_strain", "-", "axial shortening since shearing began, (H0 - H) / H0 (0 before)",
           &BiaxialSample::axial_strain},
-    Entry{"vol_strain", "-", "area change since shearing began, (A - A0) / A0, positive when dilating",
+    Entry{"vol_strain", "-",
+          "area change since shearing began, (A - A0) / A0, positive when dilating (NaN in a Brazilian test)",
           &BiaxialSample::vol_strain},
     Entry{"width", "d", "distance between the side walls", &BiaxialSample::width},
     Entry{"height", "d", "distance between the top and bottom walls", &BiaxialSample::height},
     Entry{"sigma1", "m g / d^2",
-          "axial stress: mean of the top and bottom wall forces per width, averaged since the previous output",
+          "axial stress: mean of the top and bottom wall forces per width, averaged since the previous output "
+          "(a Brazilian test: the platen force is sigma1 x width)",
           &BiaxialSample::sigma1},
     Entry{"sigma3", "m g / d^2",
           "confining stress: mean of the side wall forces per height, averaged since the previous output",
           &BiaxialSample::sigma3},
-    Entry{"phi_deg", "deg", "mobilised friction angle asin((sigma1 - sigma3) / (sigma1 + sigma3))",
+    Entry{"phi_deg", "deg",
+          "mobilised friction angle asin((sigma1 - sigma3) / (sigma1 + sigma3)) (NaN in a Brazilian test once loading)",
           &BiaxialSample::phi_deg},
     Entry{"mu_mobilised", "-", "tan(phi): the mobilised bulk friction coefficient", &BiaxialSample::mu_mobilised},
     Entry{"coordination", "-",
@@ -258,7 +261,9 @@ std::vector<SeriesColumn> BiaxialExperiment::columns() const { return series_col
 
 std::vector<double> BiaxialExperiment::measure(const World& w) const {
   const BiaxialRow r = row(w);
-  const double phi = mobilised_friction(r.sigma1, r.sigma3);
+  // The Brazilian specimen has no confinement: no mobilised friction to speak of.
+  const double phi = spec_.brazilian && phase_ != Consolidating ? std::numeric_limits<double>::quiet_NaN()
+                                                                 : mobilised_friction(r.sigma1, r.sigma3);
   const BiaxialSample sample{.step = static_cast<double>(w.step),
                              .time = w.time,
                              .phase = static_cast<double>(phase_),
