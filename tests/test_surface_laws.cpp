@@ -9,6 +9,7 @@
 #include <numeric>
 #include <vector>
 
+#include "surface/erosion_carry.hpp"
 #include "surface/profile_laws.hpp"
 
 namespace orogen {
@@ -152,6 +153,30 @@ TEST(SurfaceLaws, TheImplicitRiverNeverCutsBelowItsReceiver) {
     EXPECT_GE(v, 0.0);
     EXPECT_LT(v, 1e-3);  // an enormous step: everything down to base level
   }
+}
+
+// The carry: a law lowering a column by 0.3 of a particle per update removes a particle every
+// 3-4 updates, 30 in 100 (rounding each update would remove none), and the area accrued is the
+// area removed plus the area still due, to round-off.
+TEST(SurfaceLaws, TheCarryRemovesWholeParticlesAtTheLawsRateAndLosesNoArea) {
+  const double width = 1.0, particle = 0.5;
+  ErosionCarry carry;
+  double accrued = 0, removed_area = 0;
+  std::size_t removed = 0;
+  std::int64_t next_id = 0;
+  for (int update = 0; update < 100; ++update) {
+    const std::vector<double> before = {5.0, 5.0}, after = {5.0 - 0.3 * particle / width, 5.0 + 0.1};
+    accrue_erosion(carry, before, after, width);
+    accrued += 0.3 * particle;
+    const auto gone = pay_erosion(carry, {{0, particle, next_id++}, {1, particle, next_id++}});
+    removed += gone.size();
+    removed_area += particle * static_cast<double>(gone.size());
+    for (const auto id : gone) EXPECT_EQ(id % 2, 0) << "the rising column owes nothing";
+  }
+  EXPECT_EQ(removed, 30u);
+  EXPECT_NEAR(accrued, removed_area + carry.due[0] + carry.due[1], 1e-12);
+  EXPECT_EQ(carry.due[1], 0.0);
+  EXPECT_LT(carry.due[0], particle);
 }
 
 }  // namespace
