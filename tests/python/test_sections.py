@@ -253,5 +253,26 @@ class MainJobSections(unittest.TestCase):
             self.assertIn(text, r.stderr)
 
 
+@unittest.skipUnless(BINARY and os.path.exists(BINARY), "OROGEN_BINARY not set")
+class SinglyVergentSections(unittest.TestCase):
+    """A singly-vergent wedge draws too: x from its far wall, no S-point, the shortening in the
+    title; its faults are picked with the backstop as the core."""
+
+    def test_a_singly_vergent_run_is_drawn(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            run = os.path.join(tmp, "singly")
+            r = subprocess.run([BINARY, "run", "--out", run, "--set", "run.experiment=singly_vergent",
+                                "--set", "layer.length=40", "--set", "layer.thickness=6", "--set", "singly.shortening=0.5",
+                                "--set", "singly.outputs=4", "--set", "output.progress=never", "--threads", "1"],
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            outputs = sections.read_outputs(run)
+            self.assertTrue(all(o["singly"] for o in outputs))
+            r = subprocess.run(module_command("orogen.charts.sections", run, "--formats", "png", "--no-animation"),
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertTrue(os.path.isfile(os.path.join(run, "sections", "horizons_000004.png")))
+
+
 if __name__ == "__main__":
     unittest.main()

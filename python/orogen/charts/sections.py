@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Cross-sections of a wedge run for a reader: every output's discs as horizon bands, as active
+"""Cross-sections of a wedge run (doubly- or singly-vergent) for a reader: every output's discs as horizon bands, as active
 faults and as displacement vectors (thesis Figs 4.5, 5.3, 5.7, 5.11), drawn with matplotlib.
 
 Usage:
@@ -123,9 +123,9 @@ def _read_outputs(path, run):
     with Snapshots(path) as snaps:
         h0 = float(snaps.attrs.get("h0", 0.0))
         experiment = snaps.attrs.get("experiment", "")
-        if experiment != "wedge":
-            raise SectionError("%s: a run of experiment '%s'; sections draw wedge runs "
-                               "(orogen render draws any run)" % (run, experiment))
+        if experiment not in ("wedge", "singly_vergent"):
+            raise SectionError("%s: a run of experiment '%s'; sections draw doubly- and singly-vergent wedge "
+                               "runs (orogen render draws any run)" % (run, experiment))
         if not h0 > 0:
             raise SectionError("%s: no layer thickness h0 in snapshots.h5" % path)
         if len(snaps) == 0:
@@ -144,6 +144,7 @@ def _read_outputs(path, run):
             o["S"] = float(f["attrs"].get("S", np.nan))
             o["output"] = f["output"]
             o["h0"] = h0
+            o["singly"] = experiment == "singly_vergent"  # x from the far wall, no S-point
             outputs.append(o)
     return outputs
 
@@ -313,12 +314,15 @@ def draw_frame_furniture(ax, o, view, title):
     walls = o["walls"]
     if len(walls):
         ax.add_collection(LineCollection(walls.reshape(-1, 2, 2), colors="black", linewidths=1.5))
-    # The S-point: a triangle over the section pointing down at x = 0, clear of discs and ticks.
-    ax.plot([0.0], [view["y_max"]], marker="v", color="black", markersize=9, clip_on=False, zorder=5)
-    ax.annotate("S", (0.0, view["y_max"]), xytext=(7, 2), textcoords="offset points", ha="left", va="bottom",
-                fontsize=10, fontweight="bold", annotation_clip=False)
-    ax.axvline(0.0, color="black", linewidth=0.6, linestyle=(0, (4, 4)), alpha=0.5, zorder=4)
-    ax.set_xlabel("x from the S-point [h0]")
+    if o.get("singly"):  # a singly-vergent wedge: its far wall at x = 0, the backstop on the right
+        ax.set_xlabel("x from the far wall [h0]")
+    else:
+        # The S-point: a triangle over the section pointing down at x = 0, clear of discs and ticks.
+        ax.plot([0.0], [view["y_max"]], marker="v", color="black", markersize=9, clip_on=False, zorder=5)
+        ax.annotate("S", (0.0, view["y_max"]), xytext=(7, 2), textcoords="offset points", ha="left", va="bottom",
+                    fontsize=10, fontweight="bold", annotation_clip=False)
+        ax.axvline(0.0, color="black", linewidth=0.6, linestyle=(0, (4, 4)), alpha=0.5, zorder=4)
+        ax.set_xlabel("x from the S-point [h0]")
     ve = view["exaggeration"]
     ax.set_ylabel("height [h0]" + ("" if ve == 1 else "  (vertical exaggeration %g\u00d7)" % ve))
     ax.set_title(title, loc="left", fontsize=11, pad=14)
@@ -353,7 +357,7 @@ def draw(kind, o, view, scale, value, band, width_px):
     """One frame of `kind` for output o as a figure (the caller saves it)."""
     o, value = in_view(o, view, value)
     fig, ax, cax = figure_for(view, width_px)
-    title = "S = %.2f   output %d" % (o["S"], o["output"])
+    title = ("shortening %.2f h0   output %d" if o.get("singly") else "S = %.2f   output %d") % (o["S"], o["output"])
     if kind == "horizons" and "material" in o and len(o["materials"]) > 1:
         draw_discs(ax, o, material_colours(o["depth0"], o["material"], band))
         names = o["materials"] or ["material %d" % m for m in range(int(o["material"].max(initial=0)) + 1)]
@@ -362,7 +366,8 @@ def draw(kind, o, view, scale, value, band, width_px):
     elif kind == "horizons":
         draw_discs(ax, o, horizon_colours(o["depth0"], o["x0"], band))
         legend_bar(cax, band)
-        title += "   horizons: initial depth, bands of %.2g h0; blue pro-side, brown retro-side material" % band
+        title += ("   horizons: initial depth, bands of %.2g h0" % band +
+                  ("" if o.get("singly") else "; blue pro-side, brown retro-side material"))
     elif kind == "faults":
         norm = Normalize(0.0, scale)
         cmap = matplotlib.colormaps[FAULT_CMAP].copy()
