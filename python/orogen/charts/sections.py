@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Cross-sections of a wedge run (doubly- or singly-vergent) for a reader: every output's discs as horizon bands, as active
-faults and as displacement vectors (thesis Figs 4.5, 5.3, 5.7, 5.11), drawn with matplotlib.
+"""Cross-sections of a wedge run (doubly- or singly-vergent) for a reader: every output's discs
+as horizon bands, as active faults and as displacement vectors (thesis Figs 4.5, 5.3, 5.7,
+5.11), drawn with matplotlib.
 
 Usage:
     orogen sections RUN [RUN ...]             # the same as the line below
