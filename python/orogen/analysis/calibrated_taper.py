@@ -53,26 +53,25 @@ def calibration_for(config, explicit=None):
     """(calibration, why): the calibration that fits the run's configuration (a dict of its
     config.toml) - the explicit one (a path or a dict) when given, else the shipped default when
     the run is of the default material - or (None, the reason none fits)."""
-    candidates = [explicit] if explicit is not None else [DEFAULT_CALIBRATION]
-    for c in candidates:
-        if isinstance(c, (str, os.PathLike)) and not os.path.isfile(c):
-            return None, "no calibration file %s" % c
-        cal = load_calibration(c) if isinstance(c, (str, os.PathLike)) else c
-        keys = cal.get("material_keys")
-        if keys is None:
-            return None, "the calibration records no material keys (made before they were recorded)"
-        material = (keys.get("material") or {}).get("name", "")
-        mine = material_keys(config, material)
-        if material and mine["material"] is None:
-            return None, "the run has no material %r" % material
-        differ = ["%s.%s" % (s, k) for s in MATERIAL_KEYS for k in MATERIAL_KEYS[s]
-                  if keys[s].get(k) != mine[s].get(k)]
-        if keys.get("material") != mine["material"]:
-            differ.append("materials.%s" % material)
-        if differ:
-            return None, "the run's material differs from the calibrated one in %s" % ", ".join(differ)
-        return cal, "calibrated %s" % (material or "default material")
-    return None, "no calibration"
+    source = explicit if explicit is not None else DEFAULT_CALIBRATION
+    if isinstance(source, (str, os.PathLike)):
+        if not os.path.isfile(source):
+            return None, "no calibration file %s" % source
+        source = load_calibration(source)
+    keys = source.get("material_keys")
+    if keys is None:
+        return None, "the calibration records no material keys (made before they were recorded)"
+    material = (keys.get("material") or {}).get("name", "")
+    mine = material_keys(config, material)
+    if material and mine["material"] is None:
+        return None, "the run has no material %r" % material
+    differ = ["%s.%s" % (s, k) for s in MATERIAL_KEYS for k in MATERIAL_KEYS[s] if keys[s].get(k) != mine[s].get(k)]
+    if keys.get("material") != mine["material"]:
+        differ.append("materials.%s" % material if material else
+                      "[materials] (the calibration is of the default material, the run names its own)")
+    if differ:
+        return None, "the run's material differs from the calibrated one in %s" % ", ".join(differ)
+    return source, "calibrated %s" % (material or "default material")
 
 
 def critical_tapers(calibration, mu_b):
