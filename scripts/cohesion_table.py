@@ -14,11 +14,11 @@ import glob
 import math
 import os
 import sys
-import tomllib
 
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from orogen.results import open_run  # noqa: E402
 from orogen.tables import read_rows, read_table  # noqa: E402
 
 
@@ -29,8 +29,7 @@ def finite_mean(values):
 
 
 def strength_and_seed(run):
-    with open(os.path.join(run, "config.toml"), "rb") as f:
-        config = tomllib.load(f)
+    config = open_run(run).config
     materials = config.get("materials", {})
     strength = next(iter(materials.values()))["bond_tensile_strength"] if materials else 0.0
     return float(strength), int(config["run"]["seed"])

@@ -15,12 +15,12 @@ wedge.mu_bp).
 import argparse
 import os
 import sys
-import tomllib
 
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
 from orogen.analysis import calibrated_taper  # noqa: E402
+from orogen.results import open_run  # noqa: E402
 from orogen.tables import read_rows, read_table  # noqa: E402
 
 
@@ -33,8 +33,7 @@ def main(argv=None):
     a = p.parse_args(argv)
     cols, _ = read_table(os.path.join(a.run, "series.csv"))
     faults, _ = read_rows(os.path.join(a.run, "faults.csv"))
-    with open(os.path.join(a.run, "config.toml"), "rb") as f:
-        config = tomllib.load(f)
+    config = open_run(a.run).config
     singly = "shortening" in cols
     s_col, taper_col = ("shortening", "taper") if singly else ("S", "alpha_fit")
     mu_b = a.mu_b if a.mu_b is not None else (config["singly"]["mu_b"] if singly else config["wedge"]["mu_bp"])

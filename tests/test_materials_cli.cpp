@@ -132,6 +132,29 @@ TEST_F(MaterialsCli, BondsBreakTheSameForOneAndTwoThreadsAndAcrossAResume) {
   EXPECT_GT(slip, 0.5);
 }
 
+// The Brazilian test keeps its peak force in the checkpoint: one and two threads and a kill
+// after its peak give the same bits, summary included.
+TEST_F(MaterialsCli, ABrazilianTestIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
+  const std::string args =
+      " --set run.experiment=biaxial --set biaxial.test=brazilian --set materials.rock.friction=0.5"
+      " --set materials.rock.bond_tensile_strength=5 --set biaxial.material=rock --set particles.packing=random_discs"
+      " --set biaxial.width=12 --set biaxial.height=12 --set biaxial.strain_end=0.02 --set biaxial.sigma3=0.5"
+      " --set biaxial.outputs=20 --set output.checkpoint_every=1 --set output.progress=never";
+  const fs::path one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
+  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
+  ASSERT_EQ(run_orogen("run --out '" + one.string() + "' --threads 1" + args, dir_, env).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + two.string() + "' --threads 2" + args, dir_, env).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + killed.string() + "' --threads 1 --abort-after-outputs 25" + args, dir_).status,
+            137);
+  ASSERT_EQ(run_orogen("run --resume '" + killed.string() + "'", dir_).status, 0);
+  EXPECT_GT(breakages(one), 10u);
+  for (const fs::path& other : {two, killed}) {
+    SCOPED_TRACE(other.string());
+    expect_same_outputs(one, other);
+    EXPECT_EQ(slurp(one / "summary.csv"), slurp(other / "summary.csv"));
+  }
+}
+
 TEST_F(MaterialsCli, BadMaterialsAndUnitsExitWith2AndWriteNothing) {
   const std::string base = "[run]\nexperiment = \"singly_vergent\"\n[layer]\nthickness = 6.0\n";
   const std::string rock = "[materials.rock]\nfriction = 0.5\n";

@@ -57,79 +57,29 @@ void prepare_bond_scratch(Bonds& B, const Discs& d, std::uint64_t build, BondScr
   s.broken.resize(s.acting);
 }
 
-namespace {
-
-// Logs bond k as broken in mode broken - 1 (BondLane::broken).
-void log_break(Bonds& B, const Discs& d, std::size_t k, std::int64_t broken, std::uint64_t step, double time) {
-  const auto a = B.a[k], b = B.b[k];
-  B.breaks.push_back({step, time, B.id_a[k], B.id_b[k], 0.5 * (d.x[a] + d.x[b]), 0.5 * (d.y[a] + d.y[b]),
-                      static_cast<BondBreakMode>(broken - 1)});
-}
-
-// Removes the acting bonds flagged in `broken` (indices below scratch.acting), keeping the order.
-void remove_broken(Bonds& B, BondScratch& s, const std::vector<std::size_t>& broken) {
-  std::vector<std::uint8_t> keep(B.size(), 1);
-  for (const std::size_t k : broken) keep[k] = 0;
-  compact_arrays(B, keep);
-  s.acting -= broken.size();  // still at the front, in order
-}
-
-}  // namespace
-
 void apply_bond_forces(Bonds& B, const Discs& d, BondScratch& s, DiscForce* force, std::uint64_t step,
                        double time) {
-  std::vector<std::size_t> broken;
+  bool any_broken = false;
   for (std::size_t k = 0; k < s.acting; ++k) {
     const auto a = B.a[k], b = B.b[k];
     if (s.broken[k]) {
-      log_break(B, d, k, s.broken[k], step, time);
-      broken.push_back(k);
+      any_broken = true;
+      B.breaks.push_back({step, time, B.id_a[k], B.id_b[k], 0.5 * (d.x[a] + d.x[b]), 0.5 * (d.y[a] + d.y[b]),
+                          static_cast<BondBreakMode>(s.broken[k] - 1)});
       continue;
     }
     force[a].fx -= s.fx[k]; force[a].fy -= s.fy[k]; force[a].torque += s.torque_a[k];
     force[b].fx += s.fx[k]; force[b].fy += s.fy[k]; force[b].torque += s.torque_b[k];
   }
-  if (!broken.empty()) remove_broken(B, s, broken);
-}
-
-void bond_forces_one_thread(Bonds& B, const Discs& d, double dt, BondScratch& s, DiscForce* force,
-                            std::uint64_t step, double time) {
-  constexpr std::size_t kBlock = 64;
-  const std::uint32_t* __restrict ia = B.a.data();
-  const std::uint32_t* __restrict ib = B.b.data();
-  const double *__restrict x = d.x.data(), *__restrict y = d.y.data(), *__restrict vx = d.vx.data(),
-               *__restrict vy = d.vy.data(), *__restrict w = d.omega.data(), *__restrict r = d.radius.data();
-  double *__restrict fn = B.fn.data(), *__restrict fs = B.fs.data(), *__restrict moment = B.moment.data();
-  const double *__restrict kn = B.kn.data(), *__restrict ks = B.ks.data(), *__restrict radius = B.radius.data(),
-               *__restrict tensile = B.tensile.data(), *__restrict shear = B.shear.data();
-  alignas(64) double fx[kBlock], fy[kBlock], ta[kBlock], tb[kBlock];
-  alignas(64) std::int64_t broken_lane[kBlock];
-  std::vector<std::size_t> broken;
-  for (std::size_t k0 = 0; k0 < s.acting; k0 += kBlock) {
-    const std::size_t count = std::min(kBlock, s.acting - k0);
-#pragma omp simd
-    for (std::size_t j = 0; j < count; ++j) {
-      const std::size_t k = k0 + j;
-      const auto a = ia[k], b = ib[k];
-      const BondLane l = bond_lane(x[b] - x[a], y[b] - y[a], r[a], r[b], vx[b] - vx[a], vy[b] - vy[a], w[a], w[b],
-                                   kn[k], ks[k], radius[k], tensile[k], shear[k], fn[k], fs[k], moment[k], dt);
-      fn[k] = l.fn; fs[k] = l.fs; moment[k] = l.moment;
-      fx[j] = l.fx; fy[j] = l.fy; ta[j] = l.torque_a; tb[j] = l.torque_b;
-      broken_lane[j] = l.broken;
-    }
-    for (std::size_t j = 0; j < count; ++j) {
-      const std::size_t k = k0 + j;
-      if (broken_lane[j]) {
-        log_break(B, d, k, broken_lane[j], step, time);
-        broken.push_back(k);
-        continue;
-      }
-      const auto a = ia[k], b = ib[k];
-      force[a].fx -= fx[j]; force[a].fy -= fy[j]; force[a].torque += ta[j];
-      force[b].fx += fx[j]; force[b].fy += fy[j]; force[b].torque += tb[j];
-    }
+  if (!any_broken) return;
+  std::vector<std::uint8_t> keep(B.size(), 1);
+  std::size_t gone = 0;
+  for (std::size_t k = 0; k < s.acting; ++k) {
+    keep[k] = s.broken[k] == 0;
+    gone += s.broken[k] != 0;
   }
-  if (!broken.empty()) remove_broken(B, s, broken);
+  compact_arrays(B, keep);
+  s.acting -= gone;  // still at the front, in order
 }
 
 void remap_bonds(Bonds& B, const std::vector<std::int64_t>& index_of_id) {

@@ -115,12 +115,6 @@ void bond_forces_range(Bonds& bonds, const Discs& discs, double dt, BondScratch&
 void apply_bond_forces(Bonds& bonds, const Discs& discs, BondScratch& scratch, DiscForce* forces,
                        std::uint64_t step, double time);
 
-// bond_forces_range over all acting bonds and then apply_bond_forces, fused for a team of one
-// thread: a block of bonds at a time into arrays on the stack, added at once (the scratch's
-// arrays are neither written nor read again). The same sums in the same order: the same bits.
-void bond_forces_one_thread(Bonds& bonds, const Discs& discs, double dt, BondScratch& scratch, DiscForce* forces,
-                            std::uint64_t step, double time);
-
 // Sets each bond's disc indices from the stable ids (after the discs were re-ordered, removed or
 // added); a bond whose disc is gone (eroded, left the model) goes with it, unlogged: it did not
 // break. `index_of_id` maps stable id to index, -1 for none.

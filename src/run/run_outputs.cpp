@@ -105,8 +105,9 @@ void Run::write_event_logs() {
 
 void Run::checkpoint() {
   // The logs first: a kill between the two leaves rows after the old checkpoint, which a resume
-  // accepts; the other order would leave a checkpoint whose removals the file lacks.
-  write_event_logs();
+  // accepts; the other order would leave a checkpoint whose removals the file lacks. An output
+  // of this step has written them already.
+  if (world_.step != last_output_step_) write_event_logs();
   ArchiveWriter out;
   save_world(out, world_);
   exp_->save(out);

@@ -128,17 +128,12 @@ void World::step_stages(const ThreadSplit* given) {
     // it gathers them, and their wall contacts read before it moves them.
 #pragma omp barrier
     if (bond_count > 0) {
-      // Each thread its stretch of bonds, then one thread adds them in bond order; a team of one
-      // does both a block at a time.
+      // Each thread its stretch of bonds, then one thread adds them in bond order.
       const auto team = static_cast<std::size_t>(omp_get_num_threads());
-      if (team == 1) {
-        bond_forces_one_thread(bonds, discs, dt, bond_scratch, forces, step, time);
-      } else {
-        bond_forces_range(bonds, discs, dt, bond_scratch, bond_count * t / team, bond_count * (t + 1) / team);
+      bond_forces_range(bonds, discs, dt, bond_scratch, bond_count * t / team, bond_count * (t + 1) / team);
 #pragma omp barrier
 #pragma omp single
-        apply_bond_forces(bonds, discs, bond_scratch, forces, step, time);
-      }
+      apply_bond_forces(bonds, discs, bond_scratch, forces, step, time);
     }
     if (after_forces) {
 #pragma omp single

@@ -34,7 +34,6 @@ import json
 import math
 import os
 import sys
-import tomllib
 
 import numpy as np
 import matplotlib
@@ -43,7 +42,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
-from .. import atomic, folders, tables  # noqa: E402
+from .. import atomic, folders, results, tables  # noqa: E402
 from ..analysis import calibrated_taper, surface  # noqa: E402
 from ..analysis.powerlaw import power_law_fit, simple_model_height  # noqa: E402,F401 (shared fits)
 
@@ -541,11 +540,9 @@ def unique_labels(dirs, labels):
 
 def critical(d, calibration):
     """The critical tapers of the run's bases for its calibrated material, or why there are none."""
-    path = os.path.join(d, "config.toml")
-    if not os.path.isfile(path):
+    if not os.path.isfile(os.path.join(d, "config.toml")):
         return {"calibration": None, "why": "no config.toml"}
-    with open(path, "rb") as f:
-        config = tomllib.load(f)
+    config = results.open_run(d).config
     cal, why = calibrated_taper.calibration_for(config, calibration)
     if cal is None:
         return {"calibration": None, "why": why}
