@@ -216,6 +216,29 @@ TEST(RenderHorizons, BandsAlternateWithDepth) {
   EXPECT_NE(pixel_of_disc(img, L, f, a), pixel_of_disc(img, L, f, b));
 }
 
+// Growth strata (docs/surface.md): under horizons, sediment discs take the colour of their
+// deposition time (viridis over 0 to the frame's time), the others keep their horizon, and the
+// picture gains the colour bar.
+TEST(RenderHorizons, SedimentIsColouredByItsDepositionTime) {
+  const int cols = 20, rows = 10;
+  Frame f = hex_block(cols, rows);
+  f.time = 100;
+  f.deposition_time.assign(f.size(), std::nan(""));
+  const std::size_t old_top = disc_at(cols, 4, rows - 1), young_top = disc_at(cols, 12, rows - 1);
+  const std::size_t layer = disc_at(cols, 8, 2);
+  f.deposition_time[old_top] = 10;
+  f.deposition_time[young_top] = 90;
+  RenderOptions opt;
+  const auto c = disc_colors(f, opt);
+  EXPECT_TRUE(same(c[old_top], colormap_sample(Colormap::Viridis, 0.1)));
+  EXPECT_TRUE(same(c[young_top], colormap_sample(Colormap::Viridis, 0.9)));
+  EXPECT_TRUE(same(c[layer], horizon_color(f.depth0[layer], opt.band_fraction * f.h0, opt.horizon_colors, false)));
+  RenderOptions plain;
+  Frame without = hex_block(cols, rows);
+  EXPECT_GT(compute_layout(without, plain).width, 0);
+  EXPECT_LT(compute_layout(f, opt).plot_width, compute_layout(without, plain).plot_width);  // room for the bar
+}
+
 TEST(RenderHorizons, ProSideIsLighterShade) {
   for (double d : {0.3, 1.3, 2.3, 3.3}) {
     const Rgb retro = horizon_color(d, 1.0, 4, false), pro = horizon_color(d, 1.0, 4, true);

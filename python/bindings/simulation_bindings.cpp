@@ -1,6 +1,7 @@
 // An experiment stepped from Python, in memory: the set-up of `orogen run` (engine keys, then
 // the experiment's setup), then Experiment::advance step by step, so the world after n steps is
 // the CLI run's world after n steps, bit for bit. Files are the run driver's job (run_bindings).
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
@@ -94,6 +95,22 @@ class Simulation {
     done_ = false;
   }
 
+  // A user's surface law (docs/surface.md): law(h, dx, x_lo, dt) returns the new heights of
+  // the columns; called at each surface update with the GIL held, after the [surface] keys' laws.
+  void set_surface_law(pyb::function law) {
+    SurfaceScript script = [law](std::vector<double>& h, double dx, double x_lo, double dt) {
+      pyb::gil_scoped_acquire gil;
+      const pyb::array_t<double> heights(static_cast<pyb::ssize_t>(h.size()), h.data());
+      const auto out = pyb::array_t<double, pyb::array::c_style | pyb::array::forcecast>::ensure(law(heights, dx, x_lo, dt));
+      if (!out || out.ndim() != 1 || static_cast<std::size_t>(out.size()) != h.size())
+        throw pyb::value_error("the surface law must return one height per column (" + std::to_string(h.size()) +
+                               " numbers)");
+      std::copy(out.data(), out.data() + h.size(), h.begin());
+    };
+    if (!exp_->set_surface_script(std::move(script)))
+      throw pyb::value_error("this experiment has no surface processes (a wedge has; docs/surface.md)");
+  }
+
   World& world() { return world_; }
   const Experiment& experiment() const { return *exp_; }
   const Config& config() const { return config_; }
@@ -117,6 +134,8 @@ void bind_simulation(pyb::module_& m) {
            "after a setup function: ConfigError if its discs make the time step unstable")
       .def("step", &Simulation::step, pyb::arg("n") = 1, "up to n steps; returns how many were taken")
       .def("advance_to", &Simulation::advance_to, pyb::arg("key"), pyb::arg("value"))
+      .def("set_surface_law", &Simulation::set_surface_law, pyb::arg("law"),
+           "law(h, dx, x_lo, dt) -> new heights, run at each surface update (docs/surface.md)")
       .def("save", &Simulation::save, pyb::arg("file"))
       .def("load", &Simulation::load, pyb::arg("file"))
       .def_property_readonly("done", &Simulation::done)

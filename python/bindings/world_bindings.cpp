@@ -56,7 +56,11 @@ RemovalReason reason_of(const std::string& r) {
   if (r == "eroded") return RemovalReason::Eroded;
   if (r == "left_domain") return RemovalReason::LeftDomain;
   if (r == "other") return RemovalReason::Other;
-  throw pyb::value_error("removal reason '" + r + "': expected eroded, left_domain or other");
+  if (r == "eroded_hillslope") return RemovalReason::ErodedHillslope;
+  if (r == "eroded_fluvial") return RemovalReason::ErodedFluvial;
+  if (r == "eroded_script") return RemovalReason::ErodedScript;
+  throw pyb::value_error("removal reason '" + r +
+                         "': expected eroded, eroded_hillslope, eroded_fluvial, eroded_script, left_domain or other");
 }
 
 WallFriction friction_of(const std::string& f) {

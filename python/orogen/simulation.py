@@ -32,6 +32,13 @@ class Simulation:
         """The world (orogen World): numpy views, walls, pin/release, add/remove, friction."""
         return self._sim.world
 
+    def set_surface_law(self, law):
+        """Gives a wedge a surface law of the user's: law(h, dx, x_lo, dt) returns the new heights
+        of the surface columns (h: numpy array, columns dx wide from x_lo, over time dt), run at
+        each surface update after the [surface] keys' laws; what it lowers is eroded and logged
+        "eroded_script", what it raises is deposited as the keys' laws' is (docs/surface.md)."""
+        self._sim.set_surface_law(law)
+
     @property
     def done(self):
         return self._sim.done

@@ -35,6 +35,7 @@ Surface measure_surface(const Discs& d, double x_lo, double x_hi, double column_
   const auto n = static_cast<std::size_t>(columns);
   s.height.assign(n, std::numeric_limits<double>::quiet_NaN());
   s.top.assign(n, -1);
+  s.top_index.assign(n, 0);
   for (std::size_t i = 0; i < d.size(); ++i) {
     if (d.x[i] < x_lo || d.x[i] >= x_lo + static_cast<double>(n) * column_width) continue;
     const auto k = s.column_of(d.x[i]);
@@ -43,6 +44,7 @@ Surface measure_surface(const Discs& d, double x_lo, double x_hi, double column_
     if (!(top <= s.height[k]) || (top == s.height[k] && d.id[i] < s.top[k])) {
       s.height[k] = top;
       s.top[k] = d.id[i];
+      s.top_index[k] = i;
     }
   }
   return s;

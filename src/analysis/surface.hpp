@@ -12,6 +12,7 @@ struct Surface {
   double x_lo = 0, width = 1;      // left edge of column 0 and column width
   std::vector<double> height;      // top of the highest disc (y + r); NaN for an empty column
   std::vector<std::int64_t> top;   // disc id of the highest disc, -1 if empty
+  std::vector<std::size_t> top_index;  // its index in the discs measured (valid until they change)
 
   std::size_t column_of(double x) const;
   double column_centre(std::size_t k) const { return x_lo + (static_cast<double>(k) + 0.5) * width; }

@@ -36,6 +36,7 @@ Frame frame_from_snapshot(const Snapshot& s, double h0, const std::string& field
   f.x = s.field("x"); f.y = s.field("y"); f.radius = s.field("radius"); f.theta = s.field("theta");
   f.depth0 = s.field("depth0"); f.x0 = s.field("x0");
   f.cluster_id = s.cluster_id;
+  if (s.fields.count("deposition_time")) f.deposition_time = s.field("deposition_time");
   if (!field.empty()) {
     // An early output may lack an extra field the later ones have: draw it as missing (grey).
     const auto it = s.fields.find(field);

@@ -204,6 +204,41 @@ const std::vector<KeySpec>& schema() {
       text("wedge.packing_file", "", {},
            "settled tile from a packing run (its packing.h5); empty = settle one first"),
 
+      // [surface]: erosion laws, deposition and recycling on the wedge's surface (issue 40, docs/surface.md)
+      integer("surface.every", 500, ge(1), le(1000000),
+              "time steps between surface updates: the laws advance the surface over this many steps at once"),
+      real("surface.column_width", 0.0, ge(0), none,
+           "width of the surface columns the laws act on; 0: the wedge's surface columns, 2.3 mean radii [d]"),
+      real("surface.diffusivity", 0.0, ge(0), none,
+           "hillslope diffusivity kappa: dh/dt = kappa d2h/dx2 (linear), or Roering et al.'s law with "
+           "surface.critical_slope; 0: no hillslope law [d^2 / sqrt(d/g)]"),
+      real("surface.critical_slope", 0.0, ge(0), none,
+           "Roering et al.'s (1999) critical slope Sc of the nonlinear hillslope law, flux kappa S / (1 - (S/Sc)^2); "
+           "0: the linear law [-]"),
+      real("surface.erodibility", 0.0, ge(0), none,
+           "stream-power erodibility K: dh/dt = -K Q^m S^n, Q the rain routed down the profile; 0: no river "
+           "[d^(1-2m) / sqrt(d/g)^(1-m), for n = 1]"),
+      real("surface.area_exponent", 0.5, ge(0), le(2), "stream-power exponent m of the discharge Q [-]"),
+      real("surface.slope_exponent", 1.0, gt(0), le(4), "stream-power exponent n of the slope S [-]"),
+      real("surface.precipitation", 1.0, gt(0), none,
+           "rain on the leeward side (everywhere with surface.windward = none) [d / sqrt(d/g)]"),
+      text("surface.windward", "none", {"none", "pro", "retro"},
+           "the side of the highest column the rain comes from: surface.windward_factor times more rain there"),
+      real("surface.windward_factor", 1.0, gt(0), none,
+           "rain on the windward side over the leeward; other than 1 needs surface.windward [-]"),
+      real("surface.base_level", 1.0, ge(0), lt(50),
+           "height the rivers drain to at the profile's ends and the recycled sediment fills the forelands to; "
+           "1: the top of the incoming layer; the model's top, where discs leave, is 50 [h0]"),
+      boolean("surface.deposition", false,
+              "lay sediment discs where the laws raise the surface (a column owed a disc's area), tagged with "
+              "their deposition time"),
+      real("surface.recycling", 0.0, ge(0), le(1),
+           "fraction gamma of the laws' net erosion on each side of the divide filled into that side's foreland "
+           "(lowest columns first, up to surface.base_level; thesis 6.2); needs surface.deposition [-]"),
+      text("surface.sediment_material", "", {},
+           "material of the deposits, a name of [materials]; empty: the first material (or contact.mu without "
+           "materials)"),
+
       // [repose]: slump and ledge angle of repose experiments (thesis 3.2.1, 3.2.2)
       text("repose.variant", "slump", {"slump", "ledge"},
            "slump: lowermost particles fixed, the whole side wall removed (thesis 3.2.1); ledge: rough "
@@ -325,7 +360,11 @@ const std::vector<LaterKey>& later_keys() {
     for (const std::string_view name :
          {"contact.normal_force", "contact.damping", "contact.damping_rate", "singly.speed_bound",
           "particles.placement", "biaxial.material", "singly.initial_slope", "biaxial.test", "wedge.basal_weakening",
-          "wedge.basal_weakening_distance", "singly.basal_weakening", "singly.basal_weakening_distance"})
+          "wedge.basal_weakening_distance", "singly.basal_weakening", "singly.basal_weakening_distance",
+          "surface.every", "surface.column_width", "surface.diffusivity", "surface.critical_slope",
+          "surface.erodibility", "surface.area_exponent", "surface.slope_exponent", "surface.precipitation",
+          "surface.windward", "surface.windward_factor", "surface.base_level", "surface.deposition",
+          "surface.recycling", "surface.sediment_material"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
     out.push_back({"wedge.traction_law", format_value(std::string("drag"))});

@@ -46,7 +46,7 @@ struct ErosionLog {
   std::int64_t through_step = -1;
 };
 
-// removals.csv rows with reason "eroded" (step, time, id, cluster_id, x, y, reason).
+// removals.csv rows with a reason "eroded..." (the threshold or a surface law: step, time, id, cluster_id, x, y, reason).
 ErosionLog read_erosion(const fs::path& path) {
   ErosionLog log;
   auto& out = log.events;
@@ -69,7 +69,7 @@ ErosionLog read_erosion(const fs::path& path) {
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) f.push_back(cell);
     if (f.size() != 7) throw AnalyzeError(2, fmt::format("{} line {}: {} fields, 7 expected", path.string(), row, f.size()));
-    if (f[6] != "eroded") continue;
+    if (!f[6].starts_with("eroded")) continue;  // the threshold's and each surface law's
     try {
       out.push_back({.step = std::stoll(f[0]), .time = std::stod(f[1]), .id = std::stoll(f[2]), .x = std::stod(f[4]),
                      .y = std::stod(f[5])});

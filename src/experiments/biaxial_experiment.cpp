@@ -401,17 +401,7 @@ std::unique_ptr<Experiment> make_biaxial_experiment(const Config& c) {
   s.outputs = c.get_int32("biaxial.outputs");
   s.servo_gain = c.get_float("biaxial.servo_gain");
   s.brazilian = c.get_string("biaxial.test") == "brazilian";
-  if (const std::string& name = c.get_string("biaxial.material"); !name.empty()) {
-    std::string names;
-    for (std::size_t k = 0; k < c.materials().size(); ++k) {
-      if (c.materials().list[k].name == name) s.material = static_cast<std::ptrdiff_t>(k);
-      names += (names.empty() ? "" : ", ") + c.materials().list[k].name;
-    }
-    if (s.material < 0)
-      throw config_error(c.source_of("biaxial.material"), "biaxial.material", "\"" + name + "\"",
-                         "a name of [materials] (" + (names.empty() ? std::string("none defined") : names) +
-                             "), or empty");
-  }
+  s.material = material_named_by(c, "biaxial.material");
   read_layer_keys(c, s);
   check_material_size(c, s.width, s.height, {"biaxial.width", "biaxial.height"});
   // Quasi-static: inertial number below 1e-2 even at the lowest mean stress, sigma3, for the

@@ -15,6 +15,7 @@
 
 #include "io/binary_archive.hpp"
 #include "io/snapshot_field.hpp"
+#include "surface/surface_spec.hpp"
 #include "world/world.hpp"
 
 namespace orogen {
@@ -60,6 +61,9 @@ class Experiment {
   virtual std::optional<double> output_interval() const { return std::nullopt; }
   // Pictures shade material that started at x0 < x_split apart (NaN: no split).
   virtual double x_split() const { return std::numeric_limits<double>::quiet_NaN(); }
+  // Gives the run a user's surface law (docs/surface.md), run after the [surface] keys' laws at
+  // each surface update; false where the experiment has no surface processes.
+  virtual bool set_surface_script(SurfaceScript) { return false; }
   // Experiment state beyond the World, for checkpoints.
   virtual void save(ArchiveWriter& out) const = 0;
   virtual void load(const ArchiveReader& in) = 0;

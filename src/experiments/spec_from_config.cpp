@@ -93,6 +93,18 @@ void check_imposed_speed(const Config& c, const std::string& key) {
                        fmt::format("{}", c.get_float(key)), excess);
 }
 
+std::ptrdiff_t material_named_by(const Config& c, const std::string& key) {
+  const std::string& name = c.get_string(key);
+  if (name.empty()) return -1;
+  std::string names;
+  for (std::size_t k = 0; k < c.materials().size(); ++k) {
+    if (c.materials().list[k].name == name) return static_cast<std::ptrdiff_t>(k);
+    names += (names.empty() ? "" : ", ") + c.materials().list[k].name;
+  }
+  throw config_error(c.source_of(key), key, "\"" + name + "\"",
+                     "a name of [materials] (" + (names.empty() ? std::string("none defined") : names) + "), or empty");
+}
+
 BaseWeakening base_weakening(const Config& c, std::string_view section) {
   const std::string key = fmt::format("{}.basal_weakening", section);
   const BaseWeakening b{c.get_float(key), c.get_float(key + "_distance")};

@@ -28,6 +28,14 @@ void read_layer_keys(const Config& config, Spec& spec) {
 // that a world of materials keeps ([materials.NAME]), else ConfigError naming the key.
 BaseWeakening base_weakening(const Config& config, std::string_view section);
 
+// The index in [materials] of the material the string key names; -1 when it is empty. A name
+// [materials] does not hold is a ConfigError naming the key and the names there are.
+std::ptrdiff_t material_named_by(const Config& config, const std::string& key);
+
+// The [surface] keys (surface_from_config.cpp), lengths from h0 units to d; sets
+// sediment_material to the index of surface.sediment_material when it names one.
+SurfaceSpec read_surface_keys(const Config& config, double h0, std::uint8_t& sediment_material);
+
 // Refuses (ConfigError) material of length x thickness [d] whose estimated disc count, or whose
 // number of surface columns, is above kMaxParticles (or not finite), before anything is
 // allocated; the message names size_keys (the keys the size comes from) and the disc sizes.

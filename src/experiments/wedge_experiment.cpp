@@ -92,6 +92,8 @@ void WedgeExperiment::build_layer(World& w) {
   }
   slab_left_ = left;
   entered_ = static_cast<std::int64_t>(w.discs.size());
+  start_surface();
+  count_entered(w, 0, w.discs.size());
   t_start_ = w.time;
   update_windows(w);
   attach(w);
@@ -119,6 +121,31 @@ void WedgeExperiment::feed_slab(World& w) {
     for (std::size_t k = first_cluster; k < w.clusters.size(); ++k) e.cluster(k, Motion::Kinematic, spec_.v);
   });
   entered_ += static_cast<std::int64_t>(last - first);
+  count_entered(w, first, last);
+}
+
+// The surface laws on the tile's columns (2.3 mean radii unless surface.column_width), deposits
+// drawn from the tile's sizes.
+void WedgeExperiment::start_surface() {
+  SurfaceSpec s = spec_.surface;
+  double r_mean = 0;
+  for (double r : tile_.radius) r_mean += r;
+  r_mean /= std::max<std::size_t>(1, tile_.size());
+  if (s.column_width <= 0) s.column_width = spec_.column_width_factor * r_mean;
+  SurfaceScript script = surface_.spec().script;  // a Python law given before (re)starting
+  surface_ = SurfaceProcesses(std::move(s), tile_.radius, spec_.sediment_material, spec_.packing.seed);
+  if (script) surface_.set_script(std::move(script));
+}
+
+bool WedgeExperiment::set_surface_script(SurfaceScript script) {
+  spec_.surface.script = script;
+  surface_.set_script(std::move(script));
+  return true;
+}
+
+void WedgeExperiment::count_entered(const World& w, std::size_t first, std::size_t last) {
+  for (std::size_t i = first; i < last; ++i)
+    surface_.ledger().entered += std::numbers::pi * w.discs.radius[i] * w.discs.radius[i];
 }
 
 // Active region: between the windows that follow the deformation fronts; kinematic slab
@@ -178,7 +205,10 @@ void WedgeExperiment::pin_retro_base(World& w) {
 // Erosion (thesis 6.3): every disc, or whole cluster by its mean elevation, above the
 // threshold is removed and logged.
 void WedgeExperiment::erode(World& w) {
-  w.remove_above(spec_.erosion_height * spec_.h0, RemovalReason::Eroded);
+  const bool count = surface_.active();  // the ledger is an output of surface runs only
+  const double before = count ? disc_area(w) : 0.0;
+  if (w.remove_above(spec_.erosion_height * spec_.h0, RemovalReason::Eroded) > 0 && count)
+    surface_.ledger().eroded_threshold += before - disc_area(w);
 }
 
 void WedgeExperiment::remove_strays(World& w) {
@@ -189,7 +219,10 @@ void WedgeExperiment::remove_strays(World& w) {
     flags[i] = d.y[i] < -2.0 || d.x[i] > x_end_ + 2.0 || d.y[i] > 50 * spec_.h0;
     any |= flags[i] != 0;
   }
-  if (any) w.remove(flags, RemovalReason::LeftDomain);
+  if (!any) return;
+  const double before = disc_area(w);
+  w.remove(flags, RemovalReason::LeftDomain);
+  surface_.ledger().left += before - disc_area(w);
 }
 
 bool WedgeExperiment::advance(World& w) {
@@ -197,6 +230,7 @@ bool WedgeExperiment::advance(World& w) {
   w.advance();
   feed_slab(w);
   if (spec_.erosion_height > 0 && w.step % static_cast<std::uint64_t>(spec_.erosion_every) == 0) erode(w);
+  if (surface_.due(w)) surface_.update(w, window_pro_ - spec_.h0, x_end_, spec_.surface.every * w.dt);
   if (w.step % kHousekeepingEvery == 0) {
     remove_strays(w);
     update_windows(w);
@@ -245,9 +279,44 @@ constexpr std::array kWedgeSeries = {
 
 }  // namespace
 
-std::vector<SeriesColumn> WedgeExperiment::columns() const { return series_columns(kWedgeSeries); }
+namespace {
 
-std::vector<double> WedgeExperiment::measure(const World& w) const { return series_values(kWedgeSeries, sample(w)); }
+// The area ledger of a run with surface laws (surface/surface_processes.hpp), after the wedge's
+// columns: area_model equals area_entered - area_eroded + area_deposited - area_left to round-off.
+const std::vector<SeriesColumn>& ledger_columns() {
+  static const std::vector<SeriesColumn> columns = {
+      {"area_entered", "area of the discs ever added (initial layer and inflow; not deposits) [d^2]"},
+      {"area_eroded", "area of the discs eroded so far, by the threshold and the surface laws [d^2]"},
+      {"area_eroded_hillslope", "of area_eroded: removals logged eroded_hillslope [d^2]"},
+      {"area_eroded_fluvial", "of area_eroded: removals logged eroded_fluvial [d^2]"},
+      {"area_eroded_script", "of area_eroded: removals logged eroded_script (a Python law) [d^2]"},
+      {"area_deposited", "area of the sediment discs laid so far [d^2]"},
+      {"area_left", "area of the discs that left the domain [d^2]"},
+      {"area_model", "area of the discs in the model now [d^2]"},
+      {"area_recycled",
+       "area the laws' net erosion filled into the forelands (surface.recycling), in the continuum [d^2]"},
+      {"area_bypassed", "area to recycle that found no room below surface.base_level and left the model [d^2]"},
+  };
+  return columns;
+}
+
+}  // namespace
+
+std::vector<SeriesColumn> WedgeExperiment::columns() const {
+  auto out = series_columns(kWedgeSeries);
+  if (surface_.active()) out.insert(out.end(), ledger_columns().begin(), ledger_columns().end());
+  return out;
+}
+
+std::vector<double> WedgeExperiment::measure(const World& w) const {
+  auto out = series_values(kWedgeSeries, sample(w));
+  if (!surface_.active()) return out;
+  const AreaLedger& l = surface_.ledger();
+  for (double v : {l.entered, l.eroded_total(), l.eroded[0], l.eroded[1], l.eroded[2], l.deposited, l.left,
+                   disc_area(w), l.recycled, l.bypassed})
+    out.push_back(v);
+  return out;
+}
 
 WedgeSample WedgeExperiment::sample(const World& w) const {
   const Surface s = surface(w);
@@ -261,7 +330,7 @@ WedgeSample WedgeExperiment::sample(const World& w) const {
   std::size_t active = 0, eroded = 0, left = 0;
   for (std::size_t i = 0; i < w.discs.size(); ++i) active += w.discs.is_dynamic(i);
   for (const auto& r : w.removals) {
-    eroded += r.reason == RemovalReason::Eroded;
+    eroded += is_erosion(r.reason);
     left += r.reason == RemovalReason::LeftDomain;
   }
   const double h0 = spec_.h0;
@@ -276,7 +345,13 @@ WedgeSample WedgeExperiment::sample(const World& w) const {
 }
 
 std::vector<SnapshotField> WedgeExperiment::fields(const World& w) const {
-  return displacements_.fields(w);
+  auto out = displacements_.fields(w);
+  if (!spec_.surface.deposition) return out;
+  SnapshotField laid{"deposition_time", std::vector<double>(w.discs.size()), "sqrt(d/g)",
+                     "model time the disc was laid as sediment (surface.deposition); NaN: not a deposit"};
+  for (std::size_t i = 0; i < w.discs.size(); ++i) laid.values[i] = surface_.deposition_time(w.discs.id[i]);
+  out.push_back(std::move(laid));
+  return out;
 }
 
 std::vector<std::pair<std::string, double>> WedgeExperiment::scalars(const World& w) const {
@@ -302,6 +377,7 @@ void WedgeExperiment::save(ArchiveWriter& out) const {
   state_fields(*this, ArchiveSaver(out));
   displacements_.save(out, "wedge");
   history_.save(out, "wedge");
+  if (surface_.active()) SurfaceProcesses::state_fields(surface_, ArchiveSaver(out));
 }
 
 void WedgeExperiment::load(const ArchiveReader& in) {
@@ -309,6 +385,8 @@ void WedgeExperiment::load(const ArchiveReader& in) {
   state_fields(*this, ArchiveLoader(in));
   displacements_.load(in, "wedge");
   history_.load(in, "wedge");
+  start_surface();
+  if (surface_.active()) SurfaceProcesses::state_fields(surface_, ArchiveLoader(in));
 }
 
 void WedgeExperiment::adopt_branch_config(World& w) const {

@@ -15,6 +15,7 @@
 #include "experiments/wedge_summary.hpp"
 #include "io/archive_fields.hpp"
 #include "packing/tile.hpp"
+#include "surface/surface_processes.hpp"
 
 namespace orogen {
 
@@ -47,6 +48,8 @@ struct WedgeSpec {
   std::string packing_file;    // settled tile from a packing run; empty: settle one first
   PackingSpec packing;         // for settling the tile
   SettleSpec settle;
+  SurfaceSpec surface;                  // the surface laws ([surface]; none by default)
+  std::uint8_t sediment_material = 0;   // the deposits' material (surface.sediment_material)
 };
 
 // One output's measurements of the wedge, in the units of series.csv (the table in
@@ -81,6 +84,7 @@ class WedgeExperiment final : public Experiment {
     return spec_.s_end * spec_.h0 / spec_.v / spec_.outputs;
   }
   double x_split() const override { return 0.0; }
+  bool set_surface_script(SurfaceScript script) override;
 
   // Normalised convergence S = v t / h0 since the plates started.
   double convergence(const World& world) const { return spec_.v * (world.time - t_start_) / spec_.h0; }
@@ -92,6 +96,10 @@ class WedgeExperiment final : public Experiment {
   void pin_retro_base(World& world);
   void erode(World& world);
   void remove_strays(World& world);
+  // The area of the discs [first, last), counted as entered.
+  void count_entered(const World& world, std::size_t first, std::size_t last);
+  // (Re)makes the surface processes from the spec and the tile (setup and load).
+  void start_surface();
   Surface surface(const World& world) const;
   WedgeSample sample(const World& world) const;
   // Margin cut off each side of the settled box, where its walls loosened the packing.
@@ -131,6 +139,7 @@ class WedgeExperiment final : public Experiment {
   std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base (pin_retro_base)
   DisplacementTracker displacements_;  // for the per-output displacement fields
   WedgeHistory history_;               // the shape at each output, for summary.csv
+  SurfaceProcesses surface_;           // the surface laws and the area ledger
 };
 
 // The wedge from the [wedge], [layer], [particles] and [settle] keys (wedge_from_config.cpp);

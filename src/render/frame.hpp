@@ -27,6 +27,9 @@ struct Frame {
   std::vector<double> depth0;  // initial depth below the settled surface (>= 0)
   std::vector<double> x0;      // initial x after settling
   std::vector<std::int64_t> cluster_id;  // -1 for a free disc
+  // Sediment laid by the surface laws (docs/surface.md): each disc's time laid, NaN for the
+  // others; empty in runs without deposition. Horizons colours deposits by it (growth strata).
+  std::vector<double> deposition_time;
 
   // Optional per-disc scalar for ColorMode::Field (empty when absent).
   std::vector<double> field;

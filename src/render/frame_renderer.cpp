@@ -246,16 +246,23 @@ void draw_force_lines(cairo_t* cr, const Frame& f, const RenderOptions& opt, con
   }
 }
 
+// Horizons with sediment: the growth strata's colour bar, deposition time from 0 to now.
+bool growth_strata(const Frame& f, const RenderOptions& opt) {
+  return opt.mode == ColorMode::Horizons &&
+         std::any_of(f.deposition_time.begin(), f.deposition_time.end(), [](double t) { return std::isfinite(t); });
+}
+
 void draw_colorbar(cairo_t* cr, const Frame& f, const RenderOptions& opt, const FrameLayout& L) {
-  const bool forces = opt.mode == ColorMode::Forces;
-  const ValueRange r = forces ? force_range(f) : field_range(f, opt);
+  const bool forces = opt.mode == ColorMode::Forces, strata = opt.mode == ColorMode::Horizons;
+  const Colormap map = strata ? Colormap::Viridis : opt.colormap;
+  const ValueRange r = forces ? force_range(f) : strata ? ValueRange{0.0, std::max(f.time, 1e-12)} : field_range(f, opt);
   const double fs = L.font_px;
   const double x = L.plot_left + L.plot_width + 1.2 * fs, w = 1.2 * fs;
   const double top = L.plot_top, h = L.plot_height;
   const int rows = std::max(1, static_cast<int>(std::ceil(h)));
   for (int k = 0; k < rows; ++k) {
     const double t = 1.0 - (k + 0.5) / rows;  // high values at the top
-    set_rgb(cr, colormap_sample(opt.colormap, t));
+    set_rgb(cr, colormap_sample(map, t));
     cairo_rectangle(cr, x, top + h * k / rows, w, h / rows + 0.5);
     cairo_fill(cr);
   }
@@ -277,8 +284,9 @@ void draw_colorbar(cairo_t* cr, const Frame& f, const RenderOptions& opt, const 
   cairo_translate(cr, L.width - 0.9 * fs, top + 0.5 * h);
   cairo_rotate(cr, -0.5 * std::numbers::pi);
   cairo_set_font_size(cr, 0.95 * fs);
-  const std::string label = forces ? std::string("normal force [m g]")
-                                   : (f.field_name.empty() ? std::string("field") : f.field_name);
+  const std::string label = forces   ? std::string("normal force [m g]")
+                            : strata ? std::string("sediment laid at time [sqrt(d/g)]")
+                                     : (f.field_name.empty() ? std::string("field") : f.field_name);
   show_text_at(cr, label, 0, 0, 0.5, 0.5);
   cairo_restore(cr);
 }
@@ -296,7 +304,7 @@ FrameLayout compute_layout(const Frame& f, const RenderOptions& opt) {
   const double top = opt.draw_title ? 2.4 * fs : 0.6 * fs;
   const double bottom = opt.draw_axes ? 3.4 * fs : 0.6 * fs;
   const double left = opt.draw_axes ? 4.6 * fs : 0.6 * fs;
-  const bool bar = opt.mode == ColorMode::Field || opt.mode == ColorMode::Forces;
+  const bool bar = opt.mode == ColorMode::Field || opt.mode == ColorMode::Forces || growth_strata(f, opt);
   const double right = bar ? 8.5 * fs : 1.2 * fs;
   L.width = opt.width_px;
   L.plot_left = std::round(left);
@@ -342,8 +350,11 @@ std::vector<Rgb> disc_colors(const Frame& f, const RenderOptions& opt) {
     case ColorMode::Horizons: {
       const double band = opt.band_fraction * f.h0;
       const bool shade = pro_shading(f, opt);
+      const bool strata = !f.deposition_time.empty();
       for (std::size_t i = 0; i < f.size(); ++i)
-        c[i] = horizon_color(f.depth0[i], band, opt.horizon_colors, shade && f.x0[i] < f.x_split);
+        c[i] = strata && std::isfinite(f.deposition_time[i])
+                   ? colormap_sample(Colormap::Viridis, f.time > 0 ? f.deposition_time[i] / f.time : 1.0)
+                   : horizon_color(f.depth0[i], band, opt.horizon_colors, shade && f.x0[i] < f.x_split);
       break;
     }
     case ColorMode::Field: {
@@ -389,7 +400,8 @@ void render_png(const Frame& f, const RenderOptions& opt, const std::filesystem:
 
   if (opt.draw_title) draw_title(c, f, L);
   if (opt.draw_axes) draw_axes(c, f, opt, L);
-  if (opt.mode == ColorMode::Field || opt.mode == ColorMode::Forces) draw_colorbar(c, f, opt, L);
+  if (opt.mode == ColorMode::Field || opt.mode == ColorMode::Forces || growth_strata(f, opt))
+    draw_colorbar(c, f, opt, L);
 
   cairo_surface_flush(surface.get());
   std::filesystem::path tmp = png;

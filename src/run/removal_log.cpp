@@ -14,7 +14,8 @@ namespace orogen {
 namespace {
 
 std::string removal_row(const RemovalRecord& r) {
-  static constexpr const char* kReasons[] = {"left_domain", "eroded", "other"};
+  static constexpr const char* kReasons[] = {"left_domain", "eroded", "other", "eroded_hillslope", "eroded_fluvial",
+                                                "eroded_script"};
   return fmt::format("{},{},{},{},{},{},{}", r.step, r.time, r.id, r.cluster_id, r.x, r.y,
                      kReasons[static_cast<int>(r.reason)]);
 }
@@ -32,7 +33,9 @@ void write_removal_log(const std::filesystem::path& path, const std::vector<Remo
       "# cluster_id: stable id of the disc's cluster, -1 for a free disc [-]\n"
       "# x: disc centre when removed, horizontal [d]\n"
       "# y: disc centre when removed, vertical [d]\n"
-      "# reason: left_domain, eroded or other (trimming a packing) [-]\n" +
+      "# reason: left_domain, eroded (above wedge.erosion_height), eroded_hillslope, eroded_fluvial, "
+      "eroded_script (by a surface law: the one that eroded most of its column since it last lost a "
+      "particle) or other (trimming a packing) [-]\n" +
       fmt::format("# through_step: {} (every removal up to this time step is listed)\n", through_step) +
       "step,time,id,cluster_id,x,y,reason\n";
   for (const auto& r : removals) text += removal_row(r) + '\n';

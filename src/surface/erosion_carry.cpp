@@ -4,18 +4,29 @@
 
 namespace orogen {
 
-void accrue_erosion(ErosionCarry& carry, const std::vector<double>& before, const std::vector<double>& after,
-                    double width) {
-  if (carry.due.size() < before.size()) carry.due.resize(before.size(), 0.0);
-  for (std::size_t j = 0; j < before.size(); ++j) carry.due[j] += std::max(before[j] - after[j], 0.0) * width;
+void accrue_change(ErosionCarry& carry, const std::vector<double>& before, const std::vector<double>& after,
+                   double width, const std::array<std::vector<double>, kSurfaceLaws>& lowered_by_law) {
+  const std::size_t n = before.size();
+  if (carry.due.size() < n) carry.due.resize(n, 0.0);
+  for (auto& share : carry.by_law)
+    if (share.size() < n) share.resize(n, 0.0);
+  for (std::size_t j = 0; j < n; ++j) carry.due[j] += (before[j] - after[j]) * width;
+  for (std::size_t law = 0; law < kSurfaceLaws; ++law)
+    for (std::size_t j = 0; j < std::min(n, lowered_by_law[law].size()); ++j)
+      carry.by_law[law][j] += lowered_by_law[law][j] * width;
 }
 
-std::vector<std::int64_t> pay_erosion(ErosionCarry& carry, const std::vector<TopParticle>& tops) {
-  std::vector<std::int64_t> removed;
+std::vector<DueRemoval> pay_erosion(ErosionCarry& carry, const std::vector<TopParticle>& tops) {
+  std::vector<DueRemoval> removed;
   for (const TopParticle& t : tops) {
     if (t.column >= carry.due.size() || t.id < 0 || carry.due[t.column] < t.area) continue;
     carry.due[t.column] -= t.area;
-    removed.push_back(t.id);
+    std::size_t law = 0;
+    for (std::size_t l = 1; l < kSurfaceLaws; ++l)
+      if (t.column < carry.by_law[l].size() && carry.by_law[l][t.column] > carry.by_law[law][t.column]) law = l;
+    for (auto& share : carry.by_law)
+      if (t.column < share.size()) share[t.column] = 0;
+    removed.push_back({t.id, static_cast<SurfaceLaw>(law)});
   }
   return removed;
 }

@@ -1,24 +1,35 @@
 #pragma once
-// The sub-particle carry of issue 40 (docs/surface.md): a surface law lowers a column by less
-// than a particle in most updates; rounding each update to whole particles would erode nothing
-// (or a particle every time). Each column keeps the area the law has removed and no particle has
-// paid for yet, and a column's top particle is removed once its due reaches the particle's area,
-// so that the eroded area follows the law over time. Bookkeeping is exact: the area accrued
-// equals the area removed plus what is still due, summed over the columns.
+// The sub-particle carry of issue 40 (docs/surface.md): a surface law lowers or raises a column
+// by less than a particle in most updates; rounding each update to whole particles would move
+// nothing (or a particle every time). Each column keeps, signed, the area the laws have moved
+// and no particle has paid for yet: positive, eroded and still to be removed; negative,
+// deposited and still to be filled. A column's top particle is removed once its due reaches
+// the particle's area, and a new particle is laid on it once minus its due reaches the new
+// particle's area, so that the moved area follows the laws over time. Bookkeeping is exact:
+// the area accrued equals the area paid plus what is still due, summed over the columns.
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 namespace orogen {
 
+// The laws a removal is logged with (removals.csv's reason, RemovalReason).
+enum class SurfaceLaw : std::uint8_t { Hillslope = 0, Fluvial = 1, Script = 2 };
+constexpr std::size_t kSurfaceLaws = 3;
+
 struct ErosionCarry {
-  std::vector<double> due;  // per column: area the law removed and no particle paid yet [d^2]
+  std::vector<double> due;  // per column, signed: eroded (> 0) or deposited (< 0) and not yet paid [d^2]
+  // Per law and column: the erosion each law accrued since the column last paid a particle, to
+  // name the law of the removal (the one that accrued most).
+  std::array<std::vector<double>, kSurfaceLaws> by_law;
 };
 
-// Adds max(before - after, 0) x width to each column's due (a column whose surface rose owes
-// nothing: that is deposition's). Grows `due` to the profile's length.
-void accrue_erosion(ErosionCarry& carry, const std::vector<double>& before, const std::vector<double>& after,
-                    double width);
+// Adds (before - after) x width to each column's due, and each law's lowering x width to its
+// share (lowered_by_law[law][column] >= 0). Grows the vectors to the profile's length.
+void accrue_change(ErosionCarry& carry, const std::vector<double>& before, const std::vector<double>& after,
+                   double width, const std::array<std::vector<double>, kSurfaceLaws>& lowered_by_law);
 
 // A column's top particle: what removing it pays (its area; a cluster's whole area, paid by the
 // column of its top disc) and who it is.
@@ -28,8 +39,14 @@ struct TopParticle {
   std::int64_t id = -1;
 };
 
+struct DueRemoval {
+  std::int64_t id = -1;
+  SurfaceLaw law = SurfaceLaw::Hillslope;
+};
+
 // The particles to remove now, at most each column's top one: those whose column's due reaches
-// their area; each removed particle's area is taken from its column's due.
-std::vector<std::int64_t> pay_erosion(ErosionCarry& carry, const std::vector<TopParticle>& tops);
+// their area, each with the law that accrued most of its column's erosion; each removed
+// particle's area is taken from its column's due, and the column's shares start again.
+std::vector<DueRemoval> pay_erosion(ErosionCarry& carry, const std::vector<TopParticle>& tops);
 
 }  // namespace orogen

@@ -37,7 +37,12 @@ struct InstabilityError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class RemovalReason : std::uint8_t { LeftDomain = 0, Eroded = 1, Other = 2 };
+// Eroded: above wedge.erosion_height (the thesis's threshold); the others by the surface laws
+// of issue 40 (surface/erosion_carry.hpp's SurfaceLaw, in its order).
+enum class RemovalReason : std::uint8_t {
+  LeftDomain = 0, Eroded = 1, Other = 2, ErodedHillslope = 3, ErodedFluvial = 4, ErodedScript = 5
+};
+constexpr bool is_erosion(RemovalReason r) { return r == RemovalReason::Eroded || r >= RemovalReason::ErodedHillslope; }
 
 struct RemovalRecord {
   std::uint64_t step = 0;

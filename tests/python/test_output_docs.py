@@ -30,6 +30,12 @@ RUNS = {
               "--set", "wedge.outputs=4", "--set", "wedge.erosion_height=0.9",
               "--set", "output.contacts=true", "--set", "output.stress=true", "--set", "output.stress_grid=2",
               "--set", "analysis.in_run=true"],
+    # A wedge with surface laws and deposits (docs/surface.md): its series gains the area ledger,
+    # its outputs the deposition time.
+    "surface": ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
+                "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
+                "--set", "wedge.outputs=4", "--set", "surface.every=100", "--set", "surface.diffusivity=0.5",
+                "--set", "surface.deposition=true"],
     "packing": ["--set", "run.experiment=packing", "--set", "particles.packing=random_discs",
                 "--set", "layer.length=10", "--set", "layer.thickness=3", "--set", "contact.kn=1000",
                 "--set", "settle.relax_time=1", "--set", "settle.ke_threshold=1e-3", "--set", "output.interval=2"],
@@ -68,8 +74,21 @@ def doc_tables():
     return tables
 
 
+# Runs named after what they add to an experiment: the experiment they are, and the tag of the
+# doc's rows and tables only they write.
+VARIANTS = {"surface": ("wedge", "wedge with [surface]")}
+
+
 def documented_columns(csv_name, experiment):
-    """{column: meaning} of the doc's table for `csv_name` of `experiment`, in order."""
+    """{column: meaning} of the doc's table for `csv_name` of `experiment`, in order (a variant:
+    its experiment's, then its own table's if it has one)."""
+    if experiment in VARIANTS:
+        base, tag = VARIANTS[experiment]
+        out = documented_columns(csv_name, base)
+        for heading, header, rows in doc_tables():
+            if heading == "`%s` columns, %s" % (csv_name, tag) and header[:2] == ["column", "meaning"]:
+                out = {**out, **{unquote(r[0]): r[1] for r in rows}}
+        return out
     for heading, header, rows in doc_tables():
         m = re.match(r"`([a-z_]+\.csv)` columns, (\w+) experiment", heading)
         if m and header[:2] == ["column", "meaning"] and m.group(1) == csv_name and m.group(2) in (experiment, "every"):
@@ -78,11 +97,13 @@ def documented_columns(csv_name, experiment):
 
 
 def documented_datasets(experiment):
-    """{dataset: (type, units, description)} the doc says `experiment` writes."""
+    """{dataset: (type, units, description)} the doc says `experiment` (or a variant) writes."""
+    writers = {"every experiment"}
+    writers.update(VARIANTS.get(experiment, (experiment,)))
     for heading, header, rows in doc_tables():
         if header == ["dataset", "type", "units", "written by", "description"]:
             return {unquote(r[0]): (r[1], r[2], r[4]) for r in rows
-                    if r[3] == "every experiment" or experiment in [w.strip() for w in r[3].split(",")]}
+                    if writers & {w.strip() for w in r[3].split(",")} or r[3] in writers}
     raise AssertionError("docs/output-files.md has no table of datasets")
 
 

@@ -1,0 +1,167 @@
+// The surface laws in a wedge run end to end (docs/surface.md): every law on, with deposition
+// and recycling, gives the same bits for one and two threads and across a kill and resume; every
+// removal is logged with its law; the area ledger balances to round-off; bad [surface] input is
+// refused with exit 2 and nothing written; a law that would remove the layer stops with exit 3.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "io/snapshot_reader.hpp"
+#include "temp_dir_fixture.hpp"
+
+namespace fs = std::filesystem;
+using namespace orogen;
+using orogen::testing::run_orogen;
+using orogen::testing::slurp;
+
+namespace {
+
+class SurfaceCli : public orogen::testing::TempDirTest {
+ protected:
+  void SetUp() override {
+    ::setenv("OMP_WAIT_POLICY", "passive", 0);  // see test_cli.cpp
+    TempDirTest::SetUp();
+  }
+};
+
+// A small wedge (h0 = 5) with the nonlinear hillslope, a river under windward rain on the pro
+// side, deposition and recycling, and the thesis's threshold: about 30 fluvial and a few
+// hillslope removals, deposits from the first output on (3 s on one core).
+const std::string kEveryLaw =
+    " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
+    " --set wedge.window=3 --set wedge.s_end=1.0 --set wedge.outputs=6 --set wedge.erosion_height=1.1"
+    " --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2"
+    " --set surface.every=100 --set surface.diffusivity=0.2 --set surface.critical_slope=1.0"
+    " --set surface.erodibility=0.3 --set surface.windward=pro --set surface.windward_factor=3"
+    " --set surface.deposition=true --set surface.recycling=0.5 --set surface.base_level=1.02";
+
+void expect_same_outputs(const fs::path& a, const fs::path& b) {
+  const SnapshotReader ra(a / "snapshots.h5"), rb(b / "snapshots.h5");
+  ASSERT_EQ(ra.count(), rb.count());
+  for (std::int64_t k = 0; k < ra.count(); ++k) {
+    const Snapshot sa = ra.read(k), sb = rb.read(k);
+    ASSERT_EQ(sa.fields.size(), sb.fields.size());
+    for (const auto& [name, values] : sa.fields) {  // bit for bit, NaN included
+      const auto& other = sb.fields.at(name);
+      ASSERT_EQ(values.size(), other.size()) << name;
+      EXPECT_EQ(std::memcmp(values.data(), other.data(), values.size() * sizeof(double)), 0) << name << " output " << k;
+    }
+  }
+  for (const char* f : {"series.csv", "removals.csv", "checkpoint.bin"}) EXPECT_TRUE(slurp(a / f) == slurp(b / f)) << f;
+}
+
+// series.csv's rows as {column: value}.
+std::vector<std::map<std::string, double>> series_rows(const fs::path& run) {
+  std::ifstream in(run / "series.csv");
+  std::vector<std::string> names;
+  std::vector<std::map<std::string, double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::stringstream cells(line);
+    std::vector<std::string> cell;
+    for (std::string c; std::getline(cells, c, ',');) cell.push_back(c);
+    if (names.empty()) {
+      names = cell;
+      continue;
+    }
+    std::map<std::string, double> row;
+    for (std::size_t k = 0; k < names.size(); ++k) row[names[k]] = std::stod(cell[k]);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::size_t count_of(const std::string& text, const std::string& word) {
+  std::size_t n = 0;
+  for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
+  const fs::path one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
+  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";  // two threads take the parallel paths
+  auto r = run_orogen("run --out '" + one.string() + "' --threads 1" + kEveryLaw, dir_, env);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run_orogen("run --out '" + two.string() + "' --threads 2" + kEveryLaw, dir_, env);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_same_outputs(one, two);
+  // Killed after its third output (checkpoint after the second): the carry, the ledger and the
+  // deposits' times cross the resume.
+  r = run_orogen("run --out '" + killed.string() + "' --threads 1 --abort-after-outputs 3" + kEveryLaw, dir_);
+  ASSERT_EQ(r.status, 137) << r.err;
+  r = run_orogen("run --resume '" + killed.string() + "'", dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_same_outputs(one, killed);
+
+  // Each removal with its law; deposits tagged with their time.
+  const std::string removals = slurp(one / "removals.csv");
+  EXPECT_GT(count_of(removals, ",eroded_fluvial\n"), 10u) << removals;
+  EXPECT_GT(count_of(removals, ",eroded_hillslope\n"), 0u) << removals;
+  const SnapshotReader reader(one / "snapshots.h5");
+  const Snapshot last = reader.read(reader.count() - 1);
+  std::size_t laid = 0;
+  for (double t : last.field("deposition_time")) laid += std::isfinite(t) && t > 0;
+  EXPECT_GT(laid, 0u);  // most deposits are eroded again in this small, fast-eroding run
+
+  // The ledger: the model holds what entered, less what was eroded and left, plus what was laid.
+  const auto rows = series_rows(one);
+  ASSERT_EQ(rows.size(), 7u);
+  for (const auto& row : rows) {
+    const double expected =
+        row.at("area_entered") - row.at("area_eroded") + row.at("area_deposited") - row.at("area_left");
+    EXPECT_NEAR(row.at("area_model"), expected, 1e-12 * row.at("area_entered")) << "S = " << row.at("S");
+    EXPECT_GE(row.at("area_eroded") + 1e-9,
+              row.at("area_eroded_hillslope") + row.at("area_eroded_fluvial") + row.at("area_eroded_script"));
+  }
+  EXPECT_GT(rows.back().at("area_deposited"), 5.0);  // a dozen discs or more
+  EXPECT_GT(rows.back().at("area_recycled"), 0.0);
+}
+
+TEST_F(SurfaceCli, BadSurfaceInputExitsWith2AndWritesNothing) {
+  struct Case {
+    std::string sets;
+    std::vector<std::string> expect;
+  };
+  const std::vector<Case> cases = {
+      {"--set surface.diffusivity=-1", {"surface.diffusivity", "-1", ">= 0"}},
+      {"--set surface.erodibility=0.1 --set surface.windward_factor=3", {"surface.windward_factor", "surface.windward"}},
+      {"--set surface.recycling=0.5 --set surface.diffusivity=1", {"surface.recycling", "surface.deposition"}},
+      {"--set surface.base_level=60", {"surface.base_level", "60", "< 50"}},
+      {"--set surface.windward=east", {"surface.windward", "east", "\"pro\""}},
+      {"--set surface.sediment_material=sand --set surface.deposition=true",
+       {"surface.sediment_material", "\"sand\"", "[materials]"}},
+  };
+  int k = 0;
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.sets);
+    const fs::path out = dir_ / ("out" + std::to_string(k++));
+    const auto r = run_orogen("run --out '" + out.string() + "' " + c.sets, dir_);
+    EXPECT_EQ(r.status, 2) << r.err;
+    for (const auto& e : c.expect) EXPECT_NE(r.err.find(e), std::string::npos) << "missing '" << e << "' in: " << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
+}
+
+// A river a thousand times too strong, draining to the base: the first update would cut the
+// layer away, and the run stops saying so (exit 3) rather than eroding it.
+TEST_F(SurfaceCli, ALawThatWouldRemoveTheLayerStopsWithADiagnosis) {
+  const fs::path out = dir_ / "gone";
+  const auto r = run_orogen("run --out '" + out.string() + "' --threads 1" + kEveryLaw +
+                                " --set surface.erodibility=1000 --set surface.base_level=0 --set surface.recycling=0",
+                            dir_);
+  EXPECT_EQ(r.status, 3) << r.err;
+  const std::string log = slurp(out / "run.log");
+  EXPECT_NE(log.find("would remove the whole layer"), std::string::npos) << log;
+  EXPECT_NE(log.find("surface.erodibility"), std::string::npos) << log;
+}
