@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 
 #include "analysis/wedge_geometry.hpp"
@@ -238,11 +239,23 @@ bool WedgeExperiment::advance(World& w) {
   return true;
 }
 
-Surface WedgeExperiment::surface(const World& w) const {
+Surface WedgeExperiment::surface(const Discs& discs) const {
   double r_mean = 0;
   for (double r : tile_.radius) r_mean += r;
   r_mean /= std::max<std::size_t>(1, tile_.size());
-  return measure_surface(w.discs, window_pro_ - spec_.h0, x_end_, spec_.column_width_factor * r_mean);
+  return measure_surface(discs, window_pro_ - spec_.h0, x_end_, spec_.column_width_factor * r_mean);
+}
+
+// The discs of the crust: all but the sediment laid by the surface laws, so that the wedge's
+// shape and fronts are the orogen's (a basin's fill would count as raised, deformed surface).
+// Null where nothing is laid: measure the world's discs.
+std::unique_ptr<Discs> WedgeExperiment::crust(const World& w) const {
+  if (!spec_.surface.deposition) return nullptr;
+  auto out = std::make_unique<Discs>();
+  const auto& d = w.discs;
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (std::isnan(surface_.deposition_time(d.id[i]))) out->add(d.id[i], d.x[i], d.y[i], d.radius[i]);
+  return out;
 }
 
 namespace {
@@ -319,11 +332,13 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
 }
 
 WedgeSample WedgeExperiment::sample(const World& w) const {
-  const Surface s = surface(w);
+  const std::unique_ptr<Discs> without_sediment = crust(w);
+  const Discs& measured = without_sediment ? *without_sediment : w.discs;
+  const Surface s = surface(measured);
   // A raised stretch of surface counts as deformation from h0/2 wide, gaps up to h0/4 bridged
   // (wedge.fronts = surface).
-  WedgeGeometryInput in{w.discs.x, w.discs.y, w.discs.radius, spec_.h0, spec_.packing.d_max, spec_.marker_height, 0.0,
-                        spec_.fronts, 0.5 * spec_.h0, 0.25 * spec_.h0};
+  WedgeGeometryInput in{measured.x, measured.y, measured.radius, spec_.h0, spec_.packing.d_max, spec_.marker_height,
+                        0.0, spec_.fronts, 0.5 * spec_.h0, 0.25 * spec_.h0};
   const WedgeGeometry g = measure_wedge(in, s);
   const WallContactStats pro = w.wall_contact_stats(w.wall_index(kProBase));
   const WallContactStats retro = w.wall_contact_stats(w.wall_index(kRetroBase));

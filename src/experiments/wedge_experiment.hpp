@@ -100,7 +100,8 @@ class WedgeExperiment final : public Experiment {
   void count_entered(const World& world, std::size_t first, std::size_t last);
   // (Re)makes the surface processes from the spec and the tile (setup and load).
   void start_surface();
-  Surface surface(const World& world) const;
+  Surface surface(const Discs& discs) const;
+  std::unique_ptr<Discs> crust(const World& world) const;
   WedgeSample sample(const World& world) const;
   // Margin cut off each side of the settled box, where its walls loosened the packing.
   double tile_margin() const { return tile_margin_for(spec_.h0); }
