@@ -171,7 +171,7 @@ TEST(SurfaceLaws, TheCarryRemovesWholeParticlesAtTheLawsRateAndLosesNoArea) {
     // Two thirds of column 0's lowering by the river, one third by the hillslope.
     const std::array<std::vector<double>, kSurfaceLaws> by_law = {
         std::vector<double>{lowering / 3, 0.0}, std::vector<double>{2 * lowering / 3, 0.0}, std::vector<double>{}};
-    accrue_change(carry, before, after, width, by_law);
+    accrue_change(carry, 0, before, after, width, by_law);
     accrued += 0.3 * particle - 0.1 * width;
     const auto gone = pay_erosion(carry, {{0, particle, next_id++}, {1, particle, next_id++}});
     removed += gone.size();

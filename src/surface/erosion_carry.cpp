@@ -4,16 +4,17 @@
 
 namespace orogen {
 
-void accrue_change(ErosionCarry& carry, const std::vector<double>& before, const std::vector<double>& after,
-                   double width, const std::array<std::vector<double>, kSurfaceLaws>& lowered_by_law) {
+void accrue_change(ErosionCarry& carry, std::size_t first, const std::vector<double>& before,
+                   const std::vector<double>& after, double width,
+                   const std::array<std::vector<double>, kSurfaceLaws>& lowered_by_law) {
   const std::size_t n = before.size();
-  if (carry.due.size() < n) carry.due.resize(n, 0.0);
+  if (carry.due.size() < first + n) carry.due.resize(first + n, 0.0);
   for (auto& share : carry.by_law)
-    if (share.size() < n) share.resize(n, 0.0);
-  for (std::size_t j = 0; j < n; ++j) carry.due[j] += (before[j] - after[j]) * width;
+    if (share.size() < first + n) share.resize(first + n, 0.0);
+  for (std::size_t j = 0; j < n; ++j) carry.due[first + j] += (before[j] - after[j]) * width;
   for (std::size_t law = 0; law < kSurfaceLaws; ++law)
     for (std::size_t j = 0; j < std::min(n, lowered_by_law[law].size()); ++j)
-      carry.by_law[law][j] += lowered_by_law[law][j] * width;
+      carry.by_law[law][first + j] += lowered_by_law[law][j] * width;
 }
 
 std::vector<DueRemoval> pay_erosion(ErosionCarry& carry, const std::vector<TopParticle>& tops) {

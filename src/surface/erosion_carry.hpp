@@ -26,10 +26,11 @@ struct ErosionCarry {
   std::array<std::vector<double>, kSurfaceLaws> by_law;
 };
 
-// Adds (before - after) x width to each column's due, and each law's lowering x width to its
-// share (lowered_by_law[law][column] >= 0). Grows the vectors to the profile's length.
-void accrue_change(ErosionCarry& carry, const std::vector<double>& before, const std::vector<double>& after,
-                   double width, const std::array<std::vector<double>, kSurfaceLaws>& lowered_by_law);
+// Adds (before[k] - after[k]) x width to the due of column `first + k`, and each law's lowering
+// x width to its share (lowered_by_law[law][k] >= 0). Grows the vectors to cover the profile.
+void accrue_change(ErosionCarry& carry, std::size_t first, const std::vector<double>& before,
+                   const std::vector<double>& after, double width,
+                   const std::array<std::vector<double>, kSurfaceLaws>& lowered_by_law);
 
 // A column's top particle: what removing it pays (its area; a cluster's whole area, paid by the
 // column of its top disc) and who it is.

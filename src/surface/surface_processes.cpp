@@ -71,18 +71,17 @@ void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt) {
   const auto offset = static_cast<std::size_t>(first - origin_);
   // The continuum surface: the particles' less what the carry owes them.
   std::vector<double> h(n);
-  ErosionCarry here;
-  here.due.assign(carry_.due.begin() + static_cast<std::ptrdiff_t>(offset),
-                  carry_.due.begin() + static_cast<std::ptrdiff_t>(offset + n));
-  for (std::size_t k = 0; k < n; ++k) h[k] = (std::isnan(s.height[k]) ? 0.0 : s.height[k]) - here.due[k] / width;
+  for (std::size_t k = 0; k < n; ++k)
+    h[k] = (std::isnan(s.height[k]) ? 0.0 : s.height[k]) - carry_.due[offset + k] / width;
   const std::vector<double> before = h;
   double mean_before = 0;
   for (double v : h) mean_before += v / static_cast<double>(n);
   const ProfileStep step = advance_profile(h, width, static_cast<double>(first) * width, spec_, dt);
-  double mean_after = 0, lowest = h.empty() ? 0 : h[0];
-  for (double v : h) {
-    mean_after += v / static_cast<double>(n);
-    lowest = std::min(lowest, v);
+  // The lowest column the laws lowered (one the carry alone left below the base is not theirs).
+  double mean_after = 0, lowest = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    mean_after += h[k] / static_cast<double>(n);
+    if (h[k] < before[k]) lowest = std::min(lowest, h[k]);
   }
   const double diameter = radii_.empty() ? 1.0 : 2 * *std::max_element(radii_.begin(), radii_.end());
   if (lowest < 0 || (mean_after < diameter && mean_before >= diameter))
@@ -92,10 +91,7 @@ void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt) {
         "lower the surface laws' rates (surface.diffusivity, surface.erodibility, surface.precipitation) or "
         "surface.every",
         w.step, x_lo, x_hi, mean_before, mean_after, lowest, dt));
-  for (std::size_t k = 0; k < n; ++k) carry_.due[offset + k] += (before[k] - h[k]) * width;
-  for (std::size_t law = 0; law < kSurfaceLaws; ++law)
-    for (std::size_t k = 0; k < step.lowered[law].size(); ++k)
-      carry_.by_law[law][offset + k] += step.lowered[law][k] * width;
+  accrue_change(carry_, offset, before, h, width, step.lowered);
   ledger_.recycled += step.recycled;
   ledger_.bypassed += step.bypassed;
   for (int pass = 0; pass < kMaxRemovalPasses && pay_removals(w, first, last) > 0; ++pass) {}
