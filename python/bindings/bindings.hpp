@@ -29,6 +29,10 @@ struct WorldHandle {
 // OROGEN_MIN_PARALLEL_ITEMS), raised as ConfigError before a run or a simulation starts.
 void check_environment();
 
+// A user's surface law (docs/surface.md) as the engine calls it: law(h, dx, x_lo, dt) returns
+// the new heights, called with the GIL held; a wrong length is a ValueError.
+SurfaceScript surface_script(pyb::function law);
+
 void bind_config(pyb::module_& m);
 void bind_world(pyb::module_& m);
 void bind_simulation(pyb::module_& m);

@@ -33,8 +33,9 @@ auto call_with_world(Fn&& fn, World& w, const Experiment& e, const Config& c) {
 
 RunResult run(std::optional<std::filesystem::path> config, std::vector<std::string> overrides,
               std::filesystem::path out, int threads, bool resume, std::string from, pyb::object hook,
-              std::uint64_t every, pyb::object setup) {
+              std::uint64_t every, pyb::object setup, pyb::object surface_law) {
   RunOptions opt;
+  if (!surface_law.is_none()) opt.surface_law = surface_script(surface_law.cast<pyb::function>());
   opt.config = std::move(config);
   opt.overrides = std::move(overrides);
   opt.out = std::move(out);
@@ -80,18 +81,20 @@ void bind_run(pyb::module_& m) {
   m.def(
       "run",
       [](std::optional<std::filesystem::path> config, std::vector<std::string> overrides, std::filesystem::path out,
-         int threads, bool resume, std::string from, pyb::object hook, std::uint64_t every, pyb::object setup) {
+         int threads, bool resume, std::string from, pyb::object hook, std::uint64_t every, pyb::object setup,
+         pyb::object surface_law) {
         check_environment();
         RunResult r = run(std::move(config), std::move(overrides), std::move(out), threads, resume, std::move(from),
-                          std::move(hook), every, std::move(setup));
+                          std::move(hook), every, std::move(setup), std::move(surface_law));
         if (r.error) throw std::move(*r.error);
         return r.exit_code;
       },
       pyb::arg("config"), pyb::arg("overrides"), pyb::arg("out"), pyb::arg("threads") = -1,
       pyb::arg("resume") = false, pyb::arg("from_") = "", pyb::arg("hook") = pyb::none(), pyb::arg("every") = 0,
-      pyb::arg("setup") = pyb::none(),
+      pyb::arg("setup") = pyb::none(), pyb::arg("surface_law") = pyb::none(),
       "runs as `orogen run` does; returns its exit code (0 done, 1 I/O, 2 bad input, 3 unstable, 4 stopped by "
-      "the hook, 128+signal); setup(world) is called once before output 0 of a run that starts from its set-up");
+      "the hook, 128+signal); setup(world) is called once before output 0 of a run that starts from its set-up; "
+      "surface_law(h, dx, x_lo, dt) -> new heights at each surface update (docs/surface.md)");
 }
 
 }  // namespace orogen::py

@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <memory>
 #include <filesystem>
 
 #include "bindings.hpp"
@@ -98,15 +99,7 @@ class Simulation {
   // A user's surface law (docs/surface.md): law(h, dx, x_lo, dt) returns the new heights of
   // the columns; called at each surface update with the GIL held, after the [surface] keys' laws.
   void set_surface_law(pyb::function law) {
-    SurfaceScript script = [law](std::vector<double>& h, double dx, double x_lo, double dt) {
-      pyb::gil_scoped_acquire gil;
-      const pyb::array_t<double> heights(static_cast<pyb::ssize_t>(h.size()), h.data());
-      const auto out = pyb::array_t<double, pyb::array::c_style | pyb::array::forcecast>::ensure(law(heights, dx, x_lo, dt));
-      if (!out || out.ndim() != 1 || static_cast<std::size_t>(out.size()) != h.size())
-        throw pyb::value_error("the surface law must return one height per column (" + std::to_string(h.size()) +
-                               " numbers)");
-      std::copy(out.data(), out.data() + h.size(), h.begin());
-    };
+    SurfaceScript script = surface_script(std::move(law));
     if (!exp_->set_surface_script(std::move(script)))
       throw pyb::value_error("this experiment has no surface processes (a wedge has; docs/surface.md)");
   }
@@ -126,6 +119,25 @@ class Simulation {
 };
 
 }  // namespace
+
+SurfaceScript surface_script(pyb::function law) {
+  // The engine copies its spec (and this function) without the GIL: the Python object is held
+  // once, by a pointer whose last owner lets go of it under the GIL.
+  const std::shared_ptr<pyb::function> held(new pyb::function(std::move(law)), [](pyb::function* f) {
+    pyb::gil_scoped_acquire gil;
+    delete f;
+  });
+  return [held](std::vector<double>& h, double dx, double x_lo, double dt) {
+    pyb::gil_scoped_acquire gil;
+    const pyb::array_t<double> heights(static_cast<pyb::ssize_t>(h.size()), h.data());
+    const auto out =
+        pyb::array_t<double, pyb::array::c_style | pyb::array::forcecast>::ensure((*held)(heights, dx, x_lo, dt));
+    if (!out || out.ndim() != 1 || static_cast<std::size_t>(out.size()) != h.size())
+      throw pyb::value_error("the surface law must return one height per column (" + std::to_string(h.size()) +
+                             " numbers)");
+    std::copy(out.data(), out.data() + h.size(), h.begin());
+  };
+}
 
 void bind_simulation(pyb::module_& m) {
   pyb::class_<Simulation>(m, "Simulation")

@@ -52,10 +52,12 @@ def _result(code, out):
     raise RunError(code, out)
 
 
-def run(config=None, out="out", set=None, hook=None, every=100, threads=None, from_run=None, setup=None):
+def run(config=None, out="out", set=None, hook=None, every=100, threads=None, from_run=None, setup=None,
+        surface_law=None):
     """Runs any experiment as `orogen run CONFIG --out OUT --set ...` does (config a TOML path,
     a dict or None; set a dict of overrides; from_run "RUN[:OUTPUT]" as --from; setup(world)
-    builds on the set-up before output 0). Returns "finished", or "stopped" when the hook asked.
+    builds on the set-up before output 0; surface_law(h, dx, x_lo, dt) -> new heights, a wedge's
+    own surface law, docs/surface.md). Returns "finished", or "stopped" when the hook asked.
     Raises ConfigError before anything is written, RunError on the CLI's failures, and what the
     hook or setup raised (a hook's run checkpointed there; a setup's folder is left empty)."""
     file, settings = split(config)
@@ -68,7 +70,7 @@ def run(config=None, out="out", set=None, hook=None, every=100, threads=None, fr
                                "or give another out")
     args = overrides(settings) + overrides(set)
     code = _orogen.run(file, args, Path(out), -1 if threads is None else int(threads), False,
-                       from_run or "", hook, int(every) if hook else 0, setup)
+                       from_run or "", hook, int(every) if hook else 0, setup, surface_law)
     return _result(code, out)
 
 
@@ -79,11 +81,11 @@ def _branch_source_config(from_run):
     return Path(head if colon and tail.isdigit() else text) / "config.toml"
 
 
-def resume(out, set=None, hook=None, every=100, threads=None, setup=None):
+def resume(out, set=None, hook=None, every=100, threads=None, setup=None, surface_law=None):
     """Continues a run folder as `orogen run --resume OUT` (set: extension keys, and keys of
     speed and display for this resume alone). `setup` is called only when the run was stopped
-    before its first checkpoint and starts again."""
+    before its first checkpoint and starts again; a run given a surface_law needs it again."""
     load_config(Path(out) / "config.toml", set)
     code = _orogen.run(None, overrides(set), Path(out), -1 if threads is None else int(threads), True, "",
-                       hook, int(every) if hook else 0, setup)
+                       hook, int(every) if hook else 0, setup, surface_law)
     return _result(code, out)

@@ -284,6 +284,8 @@ int run_command(const RunOptions& opt) {
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
     auto experiment = make_experiment(config);
+    if (opt.surface_law && !experiment->set_surface_script(opt.surface_law))
+      throw UsageError("a surface law needs an experiment with surface processes (a wedge; docs/surface.md)");
     check_in_run_analysis(config);  // before the folder is claimed: a refusal leaves nothing
     const int threads = opt.threads >= 0 ? opt.threads : config.get_int32("run.threads");
     if (threads > 0) omp_set_num_threads(threads);

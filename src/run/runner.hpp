@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "surface/surface_spec.hpp"
+
 namespace orogen {
 
 struct World;
@@ -36,6 +38,7 @@ struct RunOptions {
   BetweenSteps between_steps;                   // none: the CLI's run, untouched
   std::uint64_t between_every = 0;              // called after steps that are multiples of this, before their output
   BeforeFirstOutput before_first_output;        // none: the CLI's run, untouched
+  SurfaceScript surface_law;                    // a user's surface law (docs/surface.md); none: the keys' only
 };
 
 // run_command's exit code when between_steps asked the run to stop (it can be resumed).

@@ -58,6 +58,22 @@ def test_a_python_law_equals_the_same_law_in_cpp():
     assert len(a) != 0
 
 
+def test_orogen_run_takes_a_surface_law_too(tmp_path):
+    """The run driver (files, checkpoints) with the Python law: the same discs at every output as
+    the run with surface.diffusivity, the removals the same but for the law they name."""
+    config = {**WEDGE, "wedge": {**WEDGE["wedge"], "s_end": 0.2}}
+    in_cpp = {**config, "surface": {**config["surface"], "diffusivity": KAPPA}}
+    assert orogen.run(in_cpp, out=tmp_path / "cpp") == orogen.FINISHED
+    assert orogen.run(config, out=tmp_path / "py", surface_law=diffuse_linear) == orogen.FINISHED
+    a, b = orogen.open_run(tmp_path / "cpp"), orogen.open_run(tmp_path / "py")
+    for k in (0, -1):
+        for name in ("x", "y", "particle"):
+            assert a.output(k)[name].values.tobytes() == b.output(k)[name].values.tobytes(), (k, name)
+    ra, rb = a.removals, b.removals
+    assert len(ra) > 0 and list(ra["id"]) == list(rb["id"])
+    assert set(ra["reason"]) == {"eroded_hillslope"} and set(rb["reason"]) == {"eroded_script"}
+
+
 def test_a_law_returning_the_wrong_length_is_refused():
     sim = orogen.Simulation(WEDGE)
     sim.set_surface_law(lambda h, dx, x_lo, dt: h[:-1])
