@@ -50,9 +50,8 @@ int main(int argc, char** argv) {
     experiment = orogen::make_experiment(config);
     orogen::apply_engine_config(config, world);
     experiment->setup(world);
-    std::uint8_t material = 0;
     h0 = experiment->h0();
-    spec = orogen::read_surface_keys(config, h0, material);
+    spec = orogen::read_surface_keys(config, h0);
   } catch (const orogen::ConfigError& e) {
     fmt::print(stderr, "bench_surface: {}\n", e.what());
     return 2;
@@ -64,7 +63,7 @@ int main(int argc, char** argv) {
   for (long s = 0; s < warmup && experiment->advance(world); ++s) {
   }
   if (spec.column_width <= 0) spec.column_width = 2.3 * orogen::mean_radius(world.discs);
-  orogen::SurfaceProcesses surface(spec, {0.4, 0.45, 0.5}, 0, 1);
+  orogen::SurfaceProcesses surface(spec, {0.4, 0.45, 0.5}, 1);
   const double dt = spec.every * world.dt;
   std::vector<double> step_us, update_us, fraction;
   for (int r = 0; r < rounds; ++r) {

@@ -34,7 +34,7 @@ TEST(SurfaceProcesses, ADiffusedTowerErodesAndItsFootGetsDepositsThatOverlapNoth
   spec.column_width = 1.0;
   spec.diffusivity = 2.0;
   spec.deposition = true;
-  SurfaceProcesses surface(spec, {0.4, 0.45, 0.5}, 0, 7);
+  SurfaceProcesses surface(spec, {0.4, 0.45, 0.5}, 7);
   const std::size_t before = w.discs.size();
   surface.update(w, 0.0, 40.0, 1.0);
   const AreaLedger& l = surface.ledger();

@@ -32,9 +32,9 @@ BaseWeakening base_weakening(const Config& config, std::string_view section);
 // [materials] does not hold is a ConfigError naming the key and the names there are.
 std::ptrdiff_t material_named_by(const Config& config, const std::string& key);
 
-// The [surface] keys (surface_from_config.cpp), lengths from h0 units to d; sets
-// sediment_material to the index of surface.sediment_material when it names one.
-SurfaceSpec read_surface_keys(const Config& config, double h0, std::uint8_t& sediment_material);
+// The [surface] keys (surface_from_config.cpp), lengths from h0 units to d, the sediment's
+// material as its index in [materials].
+SurfaceSpec read_surface_keys(const Config& config, double h0);
 
 // Refuses (ConfigError) material of length x thickness [d] whose estimated disc count, or whose
 // number of surface columns, is above kMaxParticles (or not finite), before anything is

@@ -6,7 +6,7 @@
 
 namespace orogen {
 
-SurfaceSpec read_surface_keys(const Config& c, double h0, std::uint8_t& sediment_material) {
+SurfaceSpec read_surface_keys(const Config& c, double h0) {
   SurfaceSpec s;
   s.every = c.get_int32("surface.every");
   s.column_width = c.get_float("surface.column_width");
@@ -22,7 +22,6 @@ SurfaceSpec read_surface_keys(const Config& c, double h0, std::uint8_t& sediment
   s.base_level = c.get_float("surface.base_level") * h0;
   s.deposition = c.get_bool("surface.deposition");
   s.recycling = c.get_float("surface.recycling");
-  s.sediment_material = c.get_string("surface.sediment_material");
   if (s.windward == Windward::None && s.windward_factor != 1)
     throw config_error(c.sources_of({"surface.windward_factor", "surface.windward"}), "surface.windward_factor",
                        format_float(s.windward_factor),
@@ -33,7 +32,7 @@ SurfaceSpec read_surface_keys(const Config& c, double h0, std::uint8_t& sediment
                        format_float(s.recycling),
                        "0 unless surface.deposition = true: recycled sediment is laid as discs");
   if (const auto k = material_named_by(c, "surface.sediment_material"); k >= 0)
-    sediment_material = static_cast<std::uint8_t>(k);
+    s.sediment_material = static_cast<std::uint8_t>(k);
   return s;
 }
 

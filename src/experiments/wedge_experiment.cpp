@@ -133,9 +133,7 @@ void WedgeExperiment::start_surface() {
   for (double r : tile_.radius) r_mean += r;
   r_mean /= std::max<std::size_t>(1, tile_.size());
   if (s.column_width <= 0) s.column_width = spec_.column_width_factor * r_mean;
-  SurfaceScript script = surface_.spec().script;  // a Python law given before (re)starting
-  surface_ = SurfaceProcesses(std::move(s), tile_.radius, spec_.sediment_material, spec_.packing.seed);
-  if (script) surface_.set_script(std::move(script));
+  surface_ = SurfaceProcesses(std::move(s), tile_.radius, spec_.packing.seed);
 }
 
 bool WedgeExperiment::set_surface_script(SurfaceScript script) {
@@ -231,7 +229,7 @@ bool WedgeExperiment::advance(World& w) {
   w.advance();
   feed_slab(w);
   if (spec_.erosion_height > 0 && w.step % static_cast<std::uint64_t>(spec_.erosion_every) == 0) erode(w);
-  if (surface_.due(w)) surface_.update(w, window_pro_ - spec_.h0, x_end_, spec_.surface.every * w.dt);
+  if (surface_.updates_at(w)) surface_.update(w, window_pro_ - spec_.h0, x_end_, spec_.surface.every * w.dt);
   if (w.step % kHousekeepingEvery == 0) {
     remove_strays(w);
     update_windows(w);

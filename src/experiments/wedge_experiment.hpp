@@ -48,8 +48,7 @@ struct WedgeSpec {
   std::string packing_file;    // settled tile from a packing run; empty: settle one first
   PackingSpec packing;         // for settling the tile
   SettleSpec settle;
-  SurfaceSpec surface;                  // the surface laws ([surface]; none by default)
-  std::uint8_t sediment_material = 0;   // the deposits' material (surface.sediment_material)
+  SurfaceSpec surface;                  // the surface laws ([surface]; none by default), a Python law
 };
 
 // One output's measurements of the wedge, in the units of series.csv (the table in

@@ -33,7 +33,7 @@ void accrue_change(ErosionCarry& carry, std::size_t first, const std::vector<dou
                    const std::array<std::vector<double>, kSurfaceLaws>& lowered_by_law);
 
 // A column's top particle: what removing it pays (its area; a cluster's whole area, paid by the
-// column of its top disc) and who it is.
+// column of its top disc) and who it is (the caller's name for it: a disc index, an id).
 struct TopParticle {
   std::size_t column = 0;
   double area = 0;

@@ -66,7 +66,7 @@ void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt) {
   // Whole columns only: one reaching past x_hi (an end wall) would hold nothing beyond it.
   const auto last = std::max(first + 1, static_cast<std::int64_t>(std::floor(x_hi / width)));
   cover(first, last);
-  const Surface s = columns_of(w, first, last);
+  Surface s = columns_of(w, first, last);
   const auto n = s.height.size();
   const auto offset = static_cast<std::size_t>(first - origin_);
   // The continuum surface: the particles' less what the carry owes them.
@@ -94,29 +94,28 @@ void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt) {
   accrue_change(carry_, offset, before, h, width, step.lowered);
   ledger_.recycled += step.recycled;
   ledger_.bypassed += step.bypassed;
-  for (int pass = 0; pass < kMaxRemovalPasses && pay_removals(w, first, last) > 0; ++pass) {}
+  // The first pass on the surface measured above (no disc has moved since), then again after
+  // each pass that removed some.
+  for (int pass = 0; pass < kMaxRemovalPasses && pay_removals(w, s, offset) > 0; ++pass) s = columns_of(w, first, last);
   if (spec_.deposition) lay_deposits(w, first, last);
 }
 
-std::size_t SurfaceProcesses::pay_removals(World& w, std::int64_t first, std::int64_t last) {
-  const Surface s = columns_of(w, first, last);
-  const auto offset = static_cast<std::size_t>(first - origin_);
+std::size_t SurfaceProcesses::pay_removals(World& w, const Surface& s, std::size_t offset) {
+  // Each column's top particle, named by its disc index.
   std::vector<TopParticle> tops;
   std::unordered_set<std::int32_t> clusters;
-  std::vector<std::size_t> index_of_top;
   for (std::size_t k = 0; k < s.height.size(); ++k) {
     if (s.top[k] < 0 || carry_.due[offset + k] <= 0) continue;
     const std::size_t i = s.top_index[k];
     if (w.discs.cluster[i] >= 0 && !clusters.insert(w.discs.cluster[i]).second) continue;  // paid once
-    tops.push_back({offset + k, body_area(w, i), static_cast<std::int64_t>(index_of_top.size())});
-    index_of_top.push_back(i);
+    tops.push_back({offset + k, body_area(w, i), static_cast<std::int64_t>(i)});
   }
   const auto paid = pay_erosion(carry_, tops);
   if (paid.empty()) return 0;
-  // One removal per law; each flags by id, as the one before re-orders the discs.
+  // One removal per law; each flags by stable id, as the one before re-orders the discs.
   std::array<std::unordered_set<std::int64_t>, kSurfaceLaws> ids;
   for (const DueRemoval& r : paid) {
-    const std::size_t i = index_of_top[static_cast<std::size_t>(r.id)];
+    const auto i = static_cast<std::size_t>(r.id);
     ids[static_cast<std::size_t>(r.law)].insert(w.discs.id[i]);
     ledger_.eroded[static_cast<std::size_t>(r.law)] += body_area(w, i);
   }
@@ -157,7 +156,7 @@ void SurfaceProcesses::lay_deposits(World& w, std::int64_t first, std::int64_t l
         y = std::max(y, d.y[j] + std::sqrt(reach * reach - dx * dx));
       }
       const std::size_t i = w.add_disc(x, y + kPlacementGap, r);
-      if (w.discs.has_materials) w.discs.material[i] = material_;
+      if (w.discs.has_materials) w.discs.material[i] = spec_.sediment_material;
       const auto id = static_cast<std::size_t>(w.discs.id[i]);
       if (deposited_at_.size() <= id) deposited_at_.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
       deposited_at_[id] = w.time;

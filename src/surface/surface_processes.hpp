@@ -34,13 +34,12 @@ struct AreaLedger {
 class SurfaceProcesses {
  public:
   SurfaceProcesses() = default;
-  // radii: the sizes deposits are drawn from (the layer's); material: their index in the
-  // world's materials (ignored without them); seed: of the draws.
-  SurfaceProcesses(SurfaceSpec spec, std::vector<double> radii, std::uint8_t material, std::uint64_t seed)
-      : spec_(std::move(spec)), radii_(std::move(radii)), material_(material), seed_(seed) {}
+  // radii: the sizes deposits are drawn from (the layer's); seed: of the draws.
+  SurfaceProcesses(SurfaceSpec spec, std::vector<double> radii, std::uint64_t seed)
+      : spec_(std::move(spec)), radii_(std::move(radii)), seed_(seed) {}
 
   bool active() const { return spec_.has_laws(); }
-  bool due(const World& w) const { return active() && w.step % static_cast<std::uint64_t>(spec_.every) == 0; }
+  bool updates_at(const World& w) const { return active() && w.step % static_cast<std::uint64_t>(spec_.every) == 0; }
   // One update over the whole columns in [x_lo, x_hi), dt the time since the last. Throws
   // InstabilityError (exit 3) where the laws would remove the whole layer.
   void update(World& w, double x_lo, double x_hi, double dt);
@@ -54,8 +53,6 @@ class SurfaceProcesses {
     const auto k = static_cast<std::size_t>(id);
     return k < deposited_at_.size() ? deposited_at_[k] : std::numeric_limits<double>::quiet_NaN();
   }
-  double column_width() const { return spec_.column_width; }
-  void set_column_width(double w) { spec_.column_width = w; }
 
   template <class Self, class F>
   static void state_fields(Self& self, F&& f) {
@@ -80,15 +77,15 @@ class SurfaceProcesses {
   void cover(std::int64_t first, std::int64_t last);
   // The surface on absolute columns [first, last).
   Surface columns_of(const World& w, std::int64_t first, std::int64_t last) const;
-  // Removes the top particles their columns owe; returns how many.
-  std::size_t pay_removals(World& w, std::int64_t first, std::int64_t last);
+  // Removes the top particles of surface s (its column 0 is the carry's column `offset`) that
+  // their columns owe; returns how many.
+  std::size_t pay_removals(World& w, const Surface& s, std::size_t offset);
   // Lays the sediment discs the columns are owed.
   void lay_deposits(World& w, std::int64_t first, std::int64_t last);
   double draw_radius(std::uint64_t draw, double& offset) const;
 
   SurfaceSpec spec_;
   std::vector<double> radii_;
-  std::uint8_t material_ = 0;
   std::uint64_t seed_ = 0;
   std::int64_t origin_ = 0;  // absolute column of carry_.due[0]
   ErosionCarry carry_;

@@ -29,7 +29,7 @@ struct SurfaceSpec {
   double base_level = 0;       // where rivers drain and basins fill to [d]
   bool deposition = false;     // particles laid where the surface rises
   double recycling = 0;        // fraction of the profile's net loss filled into the forelands
-  std::string sediment_material;  // of deposits, a name of [materials]; empty: the first one
+  std::uint8_t sediment_material = 0;  // the deposits' material, an index of [materials]
   SurfaceScript script;           // a user's law, after the others
 
   bool has_laws() const { return diffusivity > 0 || erodibility > 0 || static_cast<bool>(script); }
