@@ -15,6 +15,7 @@
 
 #include "cli_runner.hpp"
 #include "io/snapshot_reader.hpp"
+#include "refused_input.hpp"
 #include "same_outputs.hpp"
 #include "temp_dir_fixture.hpp"
 
@@ -115,11 +116,7 @@ TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
 }
 
 TEST_F(SurfaceCli, BadSurfaceInputExitsWith2AndWritesNothing) {
-  struct Case {
-    std::string sets;
-    std::vector<std::string> expect;
-  };
-  const std::vector<Case> cases = {
+  orogen::testing::expect_refused({
       {"--set surface.diffusivity=-1", {"surface.diffusivity", "-1", ">= 0"}},
       {"--set surface.erodibility=0.1 --set surface.windward_factor=3", {"surface.windward_factor", "surface.windward"}},
       {"--set surface.recycling=0.5 --set surface.diffusivity=1", {"surface.recycling", "surface.deposition"}},
@@ -127,16 +124,7 @@ TEST_F(SurfaceCli, BadSurfaceInputExitsWith2AndWritesNothing) {
       {"--set surface.windward=east", {"surface.windward", "east", "\"pro\""}},
       {"--set surface.sediment_material=sand --set surface.deposition=true",
        {"surface.sediment_material", "\"sand\"", "[materials]"}},
-  };
-  int k = 0;
-  for (const auto& c : cases) {
-    SCOPED_TRACE(c.sets);
-    const fs::path out = dir_ / ("out" + std::to_string(k++));
-    const auto r = run_orogen("run --out '" + out.string() + "' " + c.sets, dir_);
-    EXPECT_EQ(r.status, 2) << r.err;
-    for (const auto& e : c.expect) EXPECT_NE(r.err.find(e), std::string::npos) << "missing '" << e << "' in: " << r.err;
-    EXPECT_FALSE(fs::exists(out));
-  }
+  }, dir_);
 }
 
 // A river a thousand times too strong, draining to the base: the first update would cut the

@@ -5,6 +5,7 @@
 // (the thesis's basal traction condition, eq. 4.1, capped by the Coulomb limit).
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,9 @@ inline void set_weakening(Wall& w, const BaseWeakening& b) {
   w.mu_residual = w.mu * (1.0 - b.fraction);
   w.weakening_distance = b.distance;
 }
+
+// The height of a base at x (a deflecting base, src/isostasy); empty: a flat base at y = 0.
+using BaseHeight = std::function<double(double x)>;
 
 // A wall's segment as the distance tests use it: start point, the vector a -> b and its
 // squared length.

@@ -239,6 +239,21 @@ const std::vector<KeySpec>& schema() {
            "material of the deposits, a name of [materials]; empty: the first material (or contact.mu without "
            "materials)"),
 
+      // [isostasy]: a base that deflects under the wedge's load (issue 40, docs/isostasy.md)
+      text("isostasy.model", "none", {"none", "airy", "flexure"},
+           "none: a rigid flat base; airy: each base segment sinks under its own column's load; flexure: the "
+           "base is a thin elastic plate over a fluid mantle (isostasy.rigidity)"),
+      real("isostasy.mantle_density", 1.22, ge(1), le(10),
+           "density of the mantle under the base over the grains' density (3300 / 2700 = 1.22) [-]"),
+      real("isostasy.rigidity", 0.0, ge(0), none,
+           "flexural rigidity D of the plate over rho g h0^4, rho the grains' density (model = flexure; "
+           "about 3000 for a 20 km thick elastic plate under a 5 km thick layer) [-]"),
+      integer("isostasy.every", 500, ge(100), le(1000000),
+              "time steps between solves of the deflection, a multiple of 100; the base moves to each "
+              "solution over the next this many steps"),
+      real("isostasy.segment_length", 0.5, gt(0), le(4),
+           "length of the base's segments, which are also the columns its load is summed over [h0]"),
+
       // [repose]: slump and ledge angle of repose experiments (thesis 3.2.1, 3.2.2)
       text("repose.variant", "slump", {"slump", "ledge"},
            "slump: lowermost particles fixed, the whole side wall removed (thesis 3.2.1); ledge: rough "
@@ -364,7 +379,8 @@ const std::vector<LaterKey>& later_keys() {
           "surface.every", "surface.column_width", "surface.diffusivity", "surface.critical_slope",
           "surface.erodibility", "surface.area_exponent", "surface.slope_exponent", "surface.precipitation",
           "surface.windward", "surface.windward_factor", "surface.base_level", "surface.deposition",
-          "surface.recycling", "surface.sediment_material"})
+          "surface.recycling", "surface.sediment_material", "isostasy.model", "isostasy.mantle_density",
+          "isostasy.rigidity", "isostasy.every", "isostasy.segment_length"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
     out.push_back({"wedge.traction_law", format_value(std::string("drag"))});

@@ -7,6 +7,7 @@
 
 #include "boundary/wall.hpp"
 #include "experiments/packing_experiment.hpp"
+#include "isostasy/isostasy_spec.hpp"
 
 namespace orogen {
 
@@ -35,6 +36,10 @@ std::ptrdiff_t material_named_by(const Config& config, const std::string& key);
 // The [surface] keys (surface_from_config.cpp), lengths from h0 units to d, the sediment's
 // material as its index in [materials].
 SurfaceSpec read_surface_keys(const Config& config, double h0);
+
+// The [isostasy] keys (isostasy_from_config.cpp), lengths from h0 units to d and the rigidity
+// from rho g h0^4 to rho g d^4.
+IsostasySpec read_isostasy_keys(const Config& config, double h0);
 
 // Refuses (ConfigError) material of length x thickness [d] whose estimated disc count, or whose
 // number of surface columns, is above kMaxParticles (or not finite), before anything is

@@ -75,7 +75,18 @@ void WedgeExperiment::build_layer(World& w) {
   Wall end{.name = std::string(kRetroEnd), .ax = x_end_, .ay = -1, .bx = x_end_, .by = 20 * spec_.h0};
   set_weakening(pro, spec_.base_weakening);
   set_weakening(retro, spec_.base_weakening);
-  w.set_walls({pro, retro, end});
+  start_isostasy();
+  if (base_.active()) {
+    // The far pro-side plate ends at the first node; segments from there (src/isostasy).
+    Wall far = pro;
+    far.bx = base_.nodes().front();
+    std::vector<Wall> walls{far};
+    for (Wall& s : base_.segments(pro, retro, x_end_ + 1)) walls.push_back(std::move(s));
+    walls.push_back(end);
+    w.set_walls(std::move(walls));
+  } else {
+    w.set_walls({pro, retro, end});
+  }
   // Until a wedge exists, the layer in front of the S-point stalls on its base and must be
   // long enough to break at the S-point rather than against the rigid kinematic slab.
   window_pro_ = -std::max(spec_.window, spec_.initial_active) * spec_.h0;
@@ -92,6 +103,7 @@ void WedgeExperiment::build_layer(World& w) {
     left -= L;
   }
   slab_left_ = left;
+  if (base_.active()) base_.set_reference_load(layer_load(w));
   entered_ = static_cast<std::int64_t>(w.discs.size());
   start_surface();
   count_entered(w, 0, w.discs.size());
@@ -101,6 +113,7 @@ void WedgeExperiment::build_layer(World& w) {
 }
 
 void WedgeExperiment::attach(World& w) {
+  find_base_walls(w);
   if (spec_.basal == BasalCondition::ConstantVelocity)
     w.hooks.add(Stage::AfterForces, std::string(kPinHook), [this](World& world) { pin_retro_base(world); });
 }
@@ -114,12 +127,13 @@ void WedgeExperiment::feed_slab(World& w) {
   if (slab_left_ <= window_pro_ - slab_reserve()) return;
   slab_left_ -= tile_.length;
   const std::size_t first_cluster = w.clusters.size();
-  const auto [first, last] = stamp_tile(w, tile_, slab_left_);
+  const auto [first, last] = stamp_tile(w, tile_, slab_left_, std::numeric_limits<double>::infinity(), on_base(w));
   apply_units(w, first, last, spec_.packing.seed);
   w.edit_motion([&](MotionEdit& e) {
     for (auto i = first; i < last; ++i)
-      if (w.discs.cluster[i] < 0) e.disc(i, Motion::Kinematic, spec_.v);
-    for (std::size_t k = first_cluster; k < w.clusters.size(); ++k) e.cluster(k, Motion::Kinematic, spec_.v);
+      if (w.discs.cluster[i] < 0) e.disc(i, Motion::Kinematic, spec_.v, riding_speed(w, w.discs.x[i], spec_.v));
+    for (std::size_t k = first_cluster; k < w.clusters.size(); ++k)
+      e.cluster(k, Motion::Kinematic, spec_.v, riding_speed(w, w.clusters.x[k], spec_.v));
   });
   entered_ += static_cast<std::int64_t>(last - first);
   count_entered(w, first, last);
@@ -162,26 +176,28 @@ void WedgeExperiment::update_windows(World& w) {
   window_retro_ = std::min(x_end_ + 1.0, std::max(window_retro_, dr + spec_.window * spec_.h0));
   const auto ids = static_cast<std::size_t>(w.next_disc_id);
   if (pinned_.size() < ids) pinned_.resize(ids, 0);
-  auto wanted = [&](double x, bool pinned, double& vx) {
+  // Kinematic bodies ride on the base: vy keeps them on it until the next update (0: rigid base).
+  auto wanted = [&](double x, bool pinned, double& vx, double& vy) {
     vx = 0;
-    if (pinned || x > window_retro_) return Motion::Kinematic;
-    if (x < window_pro_) { vx = spec_.v; return Motion::Kinematic; }
+    vy = 0;
+    if (pinned || x > window_retro_) { vy = riding_speed(w, x, 0); return Motion::Kinematic; }
+    if (x < window_pro_) { vx = spec_.v; vy = riding_speed(w, x, vx); return Motion::Kinematic; }
     return Motion::Dynamic;
   };
   const auto& c = w.clusters;
   w.edit_motion([&](MotionEdit& e) {
     for (std::size_t i = 0; i < d.size(); ++i) {
       if (d.cluster[i] >= 0) continue;
-      double vx;
-      const Motion m = wanted(d.x[i], pinned_[static_cast<std::size_t>(d.id[i])], vx);
-      e.disc(i, m, vx);
+      double vx, vy;
+      const Motion m = wanted(d.x[i], pinned_[static_cast<std::size_t>(d.id[i])], vx, vy);
+      e.disc(i, m, vx, vy);
     }
     for (std::size_t k = 0; k < c.size(); ++k) {
       bool pinned = false;
       for (auto i : c.members[k]) if (i >= 0 && pinned_[static_cast<std::size_t>(d.id[i])]) pinned = true;
-      double vx;
-      const Motion m = wanted(c.x[k], pinned, vx);
-      e.cluster(k, m, vx);
+      double vx, vy;
+      const Motion m = wanted(c.x[k], pinned, vx, vy);
+      e.cluster(k, m, vx, vy);
     }
   });
 }
@@ -192,12 +208,12 @@ void WedgeExperiment::update_windows(World& w) {
 void WedgeExperiment::pin_retro_base(World& w) {
   const auto ids = static_cast<std::size_t>(w.next_disc_id);
   if (pinned_.size() < ids) pinned_.resize(ids, 0);
-  const std::size_t retro = w.wall_index(kRetroBase);
   w.edit_motion([&](MotionEdit& e) {
-    w.for_each_touching(retro, [&](std::size_t i) {
-      pinned_[static_cast<std::size_t>(w.discs.id[i])] = 1;
-      e.body_of(i, Motion::Kinematic);
-    });
+    for (const std::size_t retro : retro_walls_)
+      w.for_each_touching(retro, [&](std::size_t i) {
+        pinned_[static_cast<std::size_t>(w.discs.id[i])] = 1;
+        e.body_of(i, Motion::Kinematic);
+      });
   });
 }
 
@@ -215,7 +231,7 @@ void WedgeExperiment::remove_strays(World& w) {
   std::vector<std::uint8_t> flags(d.size(), 0);
   bool any = false;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    flags[i] = d.y[i] < -2.0 || d.x[i] > x_end_ + 2.0 || d.y[i] > 50 * spec_.h0;
+    flags[i] = d.y[i] < base_height(w, d.x[i]) - 2.0 || d.x[i] > x_end_ + 2.0 || d.y[i] > 50 * spec_.h0;
     any |= flags[i] != 0;
   }
   if (!any) return;
@@ -229,7 +245,16 @@ bool WedgeExperiment::advance(World& w) {
   w.advance();
   feed_slab(w);
   if (spec_.erosion_height > 0 && w.step % static_cast<std::uint64_t>(spec_.erosion_every) == 0) erode(w);
-  if (surface_.updates_at(w)) surface_.update(w, window_pro_ - spec_.h0, x_end_, spec_.surface.every * w.dt);
+  if (surface_.updates_at(w)) {
+    surface_.update(w, window_pro_ - spec_.h0, x_end_, spec_.surface.every * w.dt, on_base(w));
+  }
+  if (base_.active()) {
+    if (w.step % static_cast<std::uint64_t>(spec_.isostasy.every) == 0) {
+      base_.solve(w.discs, slab_left_, x_end_, w.step);
+      check_base_depth(w);
+    }
+    place_base(w);
+  }
   if (w.step % kHousekeepingEvery == 0) {
     remove_strays(w);
     update_windows(w);
@@ -245,14 +270,17 @@ Surface WedgeExperiment::surface(const Discs& discs) const {
 }
 
 // The discs of the crust: all but the sediment laid by the surface laws, so that the wedge's
-// shape and fronts are the orogen's (a basin's fill would count as raised, deformed surface).
-// Null where nothing is laid: measure the world's discs.
+// shape and fronts are the orogen's (a basin's fill would count as raised, deformed surface),
+// and on a deflecting base each at its height above the base, so that they are the wedge's
+// thickening rather than its sinking (docs/isostasy.md). Null where neither applies: measure
+// the world's discs.
 std::unique_ptr<Discs> WedgeExperiment::crust(const World& w) const {
-  if (!spec_.surface.deposition) return nullptr;
+  if (!spec_.surface.deposition && !base_.active()) return nullptr;
   auto out = std::make_unique<Discs>();
   const auto& d = w.discs;
   for (std::size_t i = 0; i < d.size(); ++i)
-    if (std::isnan(surface_.deposition_time(d.id[i]))) out->add(d.id[i], d.x[i], d.y[i], d.radius[i]);
+    if (std::isnan(surface_.deposition_time(d.id[i])))
+      out->add(d.id[i], d.x[i], d.y[i] - base_height(w, d.x[i]), d.radius[i]);
   return out;
 }
 
@@ -316,16 +344,21 @@ const std::vector<SeriesColumn>& ledger_columns() {
 std::vector<SeriesColumn> WedgeExperiment::columns() const {
   auto out = series_columns(kWedgeSeries);
   if (surface_.active()) out.insert(out.end(), ledger_columns().begin(), ledger_columns().end());
+  if (base_.active()) out.insert(out.end(), isostasy_columns().begin(), isostasy_columns().end());
   return out;
 }
 
 std::vector<double> WedgeExperiment::measure(const World& w) const {
-  auto out = series_values(kWedgeSeries, sample(w));
-  if (!surface_.active()) return out;
-  const AreaLedger& l = surface_.ledger();
-  for (double v : {l.entered, l.eroded_total(), l.eroded[0], l.eroded[1], l.eroded[2], l.deposited, l.left,
-                   disc_area(w), l.recycled, l.bypassed})
-    out.push_back(v);
+  const WedgeSample m = sample(w);
+  auto out = series_values(kWedgeSeries, m);
+  if (surface_.active()) {
+    const AreaLedger& l = surface_.ledger();
+    for (double v : {l.entered, l.eroded_total(), l.eroded[0], l.eroded[1], l.eroded[2], l.deposited, l.left,
+                     disc_area(w), l.recycled, l.bypassed})
+      out.push_back(v);
+  }
+  if (base_.active())
+    for (double v : isostasy_values(w, m.Dp, m.Dr)) out.push_back(v);
   return out;
 }
 
@@ -338,8 +371,8 @@ WedgeSample WedgeExperiment::sample(const World& w) const {
   WedgeGeometryInput in{measured.x, measured.y, measured.radius, spec_.h0, spec_.packing.d_max, spec_.marker_height,
                         0.0, spec_.fronts, 0.5 * spec_.h0, 0.25 * spec_.h0};
   const WedgeGeometry g = measure_wedge(in, s);
-  const WallContactStats pro = w.wall_contact_stats(w.wall_index(kProBase));
-  const WallContactStats retro = w.wall_contact_stats(w.wall_index(kRetroBase));
+  const WallContactStats pro = base_stats(w, pro_walls_);
+  const WallContactStats retro = base_stats(w, retro_walls_);
   std::size_t active = 0, eroded = 0, left = 0;
   for (std::size_t i = 0; i < w.discs.size(); ++i) active += w.discs.is_dynamic(i);
   for (const auto& r : w.removals) {
@@ -391,6 +424,7 @@ void WedgeExperiment::save(ArchiveWriter& out) const {
   displacements_.save(out, "wedge");
   history_.save(out, "wedge");
   if (surface_.active()) SurfaceProcesses::state_fields(surface_, ArchiveSaver(out));
+  if (base_.active()) IsostaticBase::state_fields(base_, ArchiveSaver(out));
 }
 
 void WedgeExperiment::load(const ArchiveReader& in) {
@@ -400,13 +434,17 @@ void WedgeExperiment::load(const ArchiveReader& in) {
   history_.load(in, "wedge");
   start_surface();
   if (surface_.active()) SurfaceProcesses::state_fields(surface_, ArchiveLoader(in));
+  start_isostasy();
+  if (base_.active()) IsostaticBase::state_fields(base_, ArchiveLoader(in));
 }
 
 void WedgeExperiment::adopt_branch_config(World& w) const {
-  w.set_wall_friction(kProBase, w.wall(kProBase).friction, spec_.mu_bp);
-  w.set_wall_friction(kRetroBase, w.wall(kRetroBase).friction, spec_.mu_br);
-  w.set_wall_weakening(kProBase, spec_.base_weakening);
-  w.set_wall_weakening(kRetroBase, spec_.base_weakening);
+  for (const auto& [walls, mu] : {std::pair{&pro_walls_, spec_.mu_bp}, std::pair{&retro_walls_, spec_.mu_br}})
+    for (const std::size_t k : *walls) {
+      const std::string name = w.walls[k].name;
+      w.set_wall_friction(name, w.walls[k].friction, mu);
+      w.set_wall_weakening(name, spec_.base_weakening);
+    }
 }
 
 std::string WedgeExperiment::status(const World& w) const {
@@ -415,8 +453,9 @@ std::string WedgeExperiment::status(const World& w) const {
   return fmt::format("S {:.2f}/{:.1f}, {} active discs", convergence(w), spec_.s_end, active);
 }
 
-std::array<double, 4> WedgeExperiment::view_box(const World&) const {
-  return {window_pro_ + spec_.window * spec_.h0 - 2 * spec_.h0, x_end_ + 0.5, -0.5, 4.0 * spec_.h0};
+std::array<double, 4> WedgeExperiment::view_box(const World& w) const {
+  const double deepest = base_.active() ? std::max(0.0, base_.shape(w.step).deepest) : 0.0;
+  return {window_pro_ + spec_.window * spec_.h0 - 2 * spec_.h0, x_end_ + 0.5, -0.5 - deepest, 4.0 * spec_.h0};
 }
 
 }  // namespace orogen

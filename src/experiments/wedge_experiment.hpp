@@ -15,6 +15,7 @@
 #include "experiments/wedge_summary.hpp"
 #include "io/archive_fields.hpp"
 #include "packing/tile.hpp"
+#include "isostasy/isostatic_base.hpp"
 #include "surface/surface_processes.hpp"
 
 namespace orogen {
@@ -49,6 +50,7 @@ struct WedgeSpec {
   PackingSpec packing;         // for settling the tile
   SettleSpec settle;
   SurfaceSpec surface;                  // the surface laws ([surface]; none by default), a Python law
+  IsostasySpec isostasy;                // a base that deflects under the load ([isostasy]; rigid by default)
 };
 
 // One output's measurements of the wedge, in the units of series.csv (the table in
@@ -94,6 +96,25 @@ class WedgeExperiment final : public Experiment {
   void update_windows(World& world);
   void pin_retro_base(World& world);
   void erode(World& world);
+  // (Re)makes the deflecting base from the spec and the tile (setup and load); the indices of the
+  // walls of each base (attach).
+  void start_isostasy();
+  double layer_load(const World& world) const;
+  void find_base_walls(const World& world);
+  // Moves the base's segments and the end wall to where the base is at this step.
+  void place_base(World& world) const;
+  // The base's height at x now (0: a rigid base), and as a function (empty: a rigid base).
+  double base_height(const World& world, double x) const;
+  BaseHeight on_base(const World& world) const;
+  // Vertical speed of a kinematic body at x moving at vx that keeps it on the deflecting base
+  // until the next window update.
+  double riding_speed(const World& world, double x, double vx) const;
+  WallContactStats base_stats(const World& world, const std::vector<std::size_t>& walls) const;
+  // Stops the run (InstabilityError, exit 3) where the base's next position is deeper than 10 h0.
+  void check_base_depth(const World& world) const;
+  // series.csv's columns of the deflecting base, and their values with the fronts Dp, Dr [h0].
+  static const std::vector<SeriesColumn>& isostasy_columns();
+  std::vector<double> isostasy_values(const World& world, double dp, double dr) const;
   void remove_strays(World& world);
   // The area of the discs [first, last), counted as entered.
   void count_entered(const World& world, std::size_t first, std::size_t last);
@@ -140,6 +161,8 @@ class WedgeExperiment final : public Experiment {
   DisplacementTracker displacements_;  // for the per-output displacement fields
   WedgeHistory history_;               // the shape at each output, for summary.csv
   SurfaceProcesses surface_;           // the surface laws and the area ledger
+  IsostaticBase base_;                 // the base's deflection (isostasy)
+  std::vector<std::size_t> pro_walls_, retro_walls_;  // each base's walls: one, or its segments
 };
 
 // The wedge from the [wedge], [layer], [particles] and [settle] keys (wedge_from_config.cpp);

@@ -75,6 +75,7 @@ std::unique_ptr<Experiment> make_wedge_experiment(const Config& c) {
   w.packing_file = c.get_string("wedge.packing_file");
   read_layer_keys(c, w);
   w.surface = read_surface_keys(c, w.h0);
+  w.isostasy = read_isostasy_keys(c, w.h0);
   check_wedge_size(c, w);
   check_drag_coefficient(c, w);
   if (!w.packing_file.empty()) check_packing_file(c, w);

@@ -103,9 +103,25 @@ Tile cut_tile(const Tile& whole, double x_lo, double length) {
 
 namespace {
 
+// How far each tile disc is lifted onto the base (0 without a base height): a free disc by the
+// base under it, a cluster's discs together by the base under their mean x (a rigid body).
+std::vector<double> lifts(const Tile& t, double x_left, const BaseHeight& base) {
+  std::vector<double> lift(t.size(), 0.0);
+  if (!base) return lift;
+  std::map<std::int32_t, std::pair<double, int>> groups;  // sum of x, count
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (t.group[k] >= 0) { auto& g = groups[t.group[k]]; g.first += t.x[k]; ++g.second; }
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const double x = t.group[k] < 0 ? t.x[k] : groups[t.group[k]].first / groups[t.group[k]].second;
+    lift[k] = base(x_left + x);
+  }
+  return lift;
+}
+
 // Tile discs (by index) that would overlap a disc already in the world near the seams at
 // x_left and x_left + length, or reach past x_max; their whole groups are dropped.
-std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_left, double x_max) {
+std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_left, double x_max,
+                                        const std::vector<double>& lift) {
   constexpr double kBand = 1.5;  // discs farther than this from a seam cannot touch across it
   std::vector<std::size_t> near;
   for (std::size_t i = 0; i < w.discs.size(); ++i) {
@@ -125,7 +141,7 @@ std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_
     const double x = x_left + t.x[k];
     if (x + t.radius[k] > x_max) { drop_disc(k); continue; }
     for (auto i : near) {
-      const double dx = w.discs.x[i] - x, dy = w.discs.y[i] - t.y[k], r = w.discs.radius[i] + t.radius[k];
+      const double dx = w.discs.x[i] - x, dy = w.discs.y[i] - (t.y[k] + lift[k]), r = w.discs.radius[i] + t.radius[k];
       if (dx * dx + dy * dy >= r * r) continue;
       drop_disc(k);
       break;
@@ -138,13 +154,15 @@ std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_
 
 }  // namespace
 
-std::pair<std::size_t, std::size_t> stamp_tile(World& w, const Tile& t, double x_left, double x_max) {
-  const auto drop = seam_overlaps(w, t, x_left, x_max);
+std::pair<std::size_t, std::size_t> stamp_tile(World& w, const Tile& t, double x_left, double x_max,
+                                               const BaseHeight& base) {
+  const std::vector<double> lift = lifts(t, x_left, base);
+  const auto drop = seam_overlaps(w, t, x_left, x_max, lift);
   const std::size_t first = w.discs.size();
   std::map<std::int32_t, std::vector<std::size_t>> members;
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (drop[k]) continue;
-    const auto i = w.add_disc(x_left + t.x[k], t.y[k], t.radius[k]);
+    const auto i = w.add_disc(x_left + t.x[k], t.y[k] + lift[k], t.radius[k]);
     w.discs.depth0[i] = t.depth0[k];
     w.discs.theta[i] = t.theta[k];  // free discs keep their orientation; clusters start at 0
     if (t.group[k] >= 0) members[t.group[k]].push_back(i);

@@ -32,14 +32,15 @@ Tile load_tile(const std::filesystem::path& packing_file);
 // every seam between stamped copies a weak zone.
 Tile cut_tile(const Tile& whole, double x_lo, double length);
 
-// Stamps a copy of the tile with its lower-left corner at (x, 0): new discs and clusters with
-// fresh ids, at rest, with x0/y0 at their new positions and depth0 from the tile. Copies sit
+// Stamps a copy of the tile with its lower-left corner at (x, 0), each particle lifted by the
+// base's height under it: new discs and clusters with fresh ids, at rest, with x0/y0 at their new positions and depth0 from the tile. Copies sit
 // exactly one tile length apart; where a new disc would overlap an existing one across a seam,
 // its particle (whole cluster) is left out, and so is one that would reach past x_max (a wall
 // there would otherwise blast it away at the first step). Returns the index range
 // [first, last) of the new discs.
 std::pair<std::size_t, std::size_t> stamp_tile(World& world, const Tile& tile, double x,
-                                               double x_max = std::numeric_limits<double>::infinity());
+                                               double x_max = std::numeric_limits<double>::infinity(),
+                                               const BaseHeight& base = {});
 
 void save_tile(ArchiveWriter& out, const Tile& tile);
 Tile read_tile(const ArchiveReader& in);

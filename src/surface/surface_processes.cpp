@@ -60,7 +60,7 @@ void SurfaceProcesses::cover(std::int64_t first, std::int64_t last) {
   origin_ = std::min(first, origin_);
 }
 
-void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt) {
+void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt, const BaseHeight& base) {
   const double width = spec_.column_width;
   const auto first = static_cast<std::int64_t>(std::floor(x_lo / width));
   // Whole columns only: one reaching past x_hi (an end wall) would hold nothing beyond it.
@@ -69,25 +69,29 @@ void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt) {
   Surface s = columns_of(w, first, last);
   const auto n = s.height.size();
   const auto offset = static_cast<std::size_t>(first - origin_);
-  // The continuum surface: the particles' less what the carry owes them.
-  std::vector<double> h(n);
+  // The base under each column's middle, and the continuum surface: the particles' (the base's
+  // in an empty column) less what the carry owes them.
+  std::vector<double> ground(n, 0.0), h(n);
+  if (base)
+    for (std::size_t k = 0; k < n; ++k) ground[k] = base((static_cast<double>(first) + 0.5 + static_cast<double>(k)) * width);
   for (std::size_t k = 0; k < n; ++k)
-    h[k] = (std::isnan(s.height[k]) ? 0.0 : s.height[k]) - carry_.due[offset + k] / width;
+    h[k] = (std::isnan(s.height[k]) ? ground[k] : s.height[k]) - carry_.due[offset + k] / width;
   const std::vector<double> before = h;
-  double mean_before = 0;
-  for (double v : h) mean_before += v / static_cast<double>(n);
+  double mean_before = 0;  // of the thickness over the base
+  for (std::size_t k = 0; k < n; ++k) mean_before += (h[k] - ground[k]) / static_cast<double>(n);
   const ProfileStep step = advance_profile(h, width, static_cast<double>(first) * width, spec_, dt);
-  // The lowest column the laws lowered (one the carry alone left below the base is not theirs).
+  // The lowest column the laws lowered, over the base (one the carry alone left below the base
+  // is not theirs).
   double mean_after = 0, lowest = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    mean_after += h[k] / static_cast<double>(n);
-    if (h[k] < before[k]) lowest = std::min(lowest, h[k]);
+    mean_after += (h[k] - ground[k]) / static_cast<double>(n);
+    if (h[k] < before[k]) lowest = std::min(lowest, h[k] - ground[k]);
   }
   const double diameter = radii_.empty() ? 1.0 : 2 * *std::max_element(radii_.begin(), radii_.end());
   if (lowest < 0 || (mean_after < diameter && mean_before >= diameter))
     throw InstabilityError(fmt::format(
         "the surface update at step {} would remove the whole layer: the profile over x = [{:.4g}, {:.4g}] d falls "
-        "from a mean height of {:.4g} to {:.4g} d (lowest column {:.4g} d, the base at 0) in {:.4g} time units; "
+        "from a mean height of {:.4g} to {:.4g} d over the base (lowest column {:.4g} d over it) in {:.4g} time units; "
         "lower the surface laws' rates (surface.diffusivity, surface.erodibility, surface.precipitation) or "
         "surface.every",
         w.step, x_lo, x_hi, mean_before, mean_after, lowest, dt));
@@ -97,7 +101,7 @@ void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt) {
   // The first pass on the surface measured above (no disc has moved since), then again after
   // each pass that removed some.
   for (int pass = 0; pass < kMaxRemovalPasses && pay_removals(w, s, offset) > 0; ++pass) s = columns_of(w, first, last);
-  if (spec_.deposition) lay_deposits(w, first, last);
+  if (spec_.deposition) lay_deposits(w, first, last, base);
 }
 
 std::size_t SurfaceProcesses::pay_removals(World& w, const Surface& s, std::size_t offset) {
@@ -136,7 +140,7 @@ double SurfaceProcesses::draw_radius(std::uint64_t draw, double& offset) const {
   return radius;
 }
 
-void SurfaceProcesses::lay_deposits(World& w, std::int64_t first, std::int64_t last) {
+void SurfaceProcesses::lay_deposits(World& w, std::int64_t first, std::int64_t last, const BaseHeight& base) {
   const double width = spec_.column_width;
   const auto offset = static_cast<std::size_t>(first - origin_);
   for (std::int64_t col = first; col < last; ++col) {
@@ -147,8 +151,13 @@ void SurfaceProcesses::lay_deposits(World& w, std::int64_t first, std::int64_t l
       if (!(-owed >= disc_area_of(r))) break;  // (a NaN owes nothing)
       const double x = (static_cast<double>(col) + 0.5 + jitter) * width;  // inside the column
       // The lowest height at x where a disc of radius r touches nothing (overlapping no disc
-      // and not the base).
+      // and not the base: above the base's highest point under it, sampled every r / 2).
       double y = r;
+      if (base) {
+        double top = base(x - r);
+        for (double at : {x - 0.5 * r, x, x + 0.5 * r, x + r}) top = std::max(top, base(at));
+        y = top + r;
+      }
       const auto& d = w.discs;
       for (std::size_t j = 0; j < d.size(); ++j) {
         const double reach = r + d.radius[j], dx = d.x[j] - x;

@@ -40,9 +40,10 @@ class SurfaceProcesses {
 
   bool active() const { return spec_.has_laws(); }
   bool updates_at(const World& w) const { return active() && w.step % static_cast<std::uint64_t>(spec_.every) == 0; }
-  // One update over the whole columns in [x_lo, x_hi), dt the time since the last. Throws
-  // InstabilityError (exit 3) where the laws would remove the whole layer.
-  void update(World& w, double x_lo, double x_hi, double dt);
+  // One update over the whole columns in [x_lo, x_hi), dt the time since the last, on a base
+  // at `base` (empty: flat at y = 0). Throws InstabilityError (exit 3) where the laws would
+  // remove the whole layer.
+  void update(World& w, double x_lo, double x_hi, double dt, const BaseHeight& base = {});
 
   AreaLedger& ledger() { return ledger_; }
   const AreaLedger& ledger() const { return ledger_; }
@@ -81,7 +82,7 @@ class SurfaceProcesses {
   // their columns owe; returns how many.
   std::size_t pay_removals(World& w, const Surface& s, std::size_t offset);
   // Lays the sediment discs the columns are owed.
-  void lay_deposits(World& w, std::int64_t first, std::int64_t last);
+  void lay_deposits(World& w, std::int64_t first, std::int64_t last, const BaseHeight& base);
   double draw_radius(std::uint64_t draw, double& offset) const;
 
   SurfaceSpec spec_;

@@ -21,6 +21,7 @@ bool MotionEdit::disc(std::size_t i, Motion m, double vx, double vy) {
   if (d_.cluster[i] >= 0)
     throw std::logic_error("MotionEdit::disc: disc " + std::to_string(d_.id[i]) + " belongs to a cluster");
   if (!differs(d_.motion[i], d_.vx[i], d_.vy[i], m, vx, vy)) return false;
+  motion_changed_ |= d_.motion[i] != static_cast<std::uint8_t>(m);
   d_.motion[i] = static_cast<std::uint8_t>(m);
   if (d_.motion[i] == kKinematic) { d_.vx[i] = vx; d_.vy[i] = vy; d_.omega[i] = 0; }
   changed_ = true;
@@ -29,6 +30,7 @@ bool MotionEdit::disc(std::size_t i, Motion m, double vx, double vy) {
 
 bool MotionEdit::cluster(std::size_t k, Motion m, double vx, double vy) {
   if (!differs(c_.motion[k], c_.vx[k], c_.vy[k], m, vx, vy)) return false;
+  motion_changed_ |= c_.motion[k] != static_cast<std::uint8_t>(m);
   c_.motion[k] = static_cast<std::uint8_t>(m);
   if (c_.motion[k] == kKinematic) { c_.vx[k] = vx; c_.vy[k] = vy; c_.omega[k] = 0; }
   for (auto i : c_.members[k])

@@ -2,7 +2,8 @@
 // Changes of motion flags (dynamic, or kinematic at a given velocity), batched:
 // World::edit_motion hands one to the caller and, if anything changed, then places the member
 // discs on their bodies and marks the neighbour list for a rebuild (the wall contacts list
-// dynamic discs only), so that no caller has to remember either.
+// dynamic discs only) where a body turned dynamic or kinematic, so that no caller has to
+// remember either.
 #include <cstddef>
 
 #include "particles/clusters.hpp"
@@ -23,12 +24,16 @@ class MotionEdit {
   // Disc i if it is free, else its whole cluster.
   bool body_of(std::size_t i, Motion m, double vx = 0, double vy = 0);
 
+  // Whether anything changed; whether a body turned dynamic or kinematic (not only a
+  // kinematic velocity), which changes the wall contacts' list.
   bool changed() const { return changed_; }
+  bool motion_changed() const { return motion_changed_; }
 
  private:
   Discs& d_;
   Clusters& c_;
   bool changed_ = false;
+  bool motion_changed_ = false;
 };
 
 }  // namespace orogen

@@ -153,18 +153,20 @@ struct World {
   void set_wall_weakening(std::string_view name, const BaseWeakening& weakening);
   // New end points: the list follows by its own test (wall_displacement), as for a moving wall.
   void set_wall_ends(std::string_view name, double ax, double ay, double bx, double by);
+  void set_wall_ends(std::size_t index, double ax, double ay, double bx, double by);
   // A disabled wall has no contacts: the list is rebuilt.
   void enable_wall(std::string_view name, bool enabled);
 
   // Changes motion flags through `edit(MotionEdit&)`; if any changed, places member discs on
-  // their bodies and marks the list for a rebuild (wall contacts are listed for dynamic discs).
+  // their bodies, and if a body turned dynamic or kinematic marks the list for a rebuild (wall
+  // contacts are listed for dynamic discs; a kinematic body's new velocity changes no list).
   template <class F>
   void edit_motion(F&& edit) {
     MotionEdit e(discs, clusters);
     edit(e);
     if (!e.changed()) return;
     update_cluster_discs(clusters, discs);
-    invalidate_neighbors();
+    if (e.motion_changed()) invalidate_neighbors();
   }
 
   // --- Reading the contacts (contact/contact_store.hpp); disc indices are those of the last

@@ -44,7 +44,11 @@ void World::set_wall_weakening(std::string_view name, const BaseWeakening& weake
 }
 
 void World::set_wall_ends(std::string_view name, double ax, double ay, double bx, double by) {
-  Wall& w = walls[wall_index(name)];
+  set_wall_ends(wall_index(name), ax, ay, bx, by);
+}
+
+void World::set_wall_ends(std::size_t index, double ax, double ay, double bx, double by) {
+  Wall& w = walls.at(index);
   w.ax = ax; w.ay = ay; w.bx = bx; w.by = by;
 }
 

@@ -36,6 +36,10 @@ RUNS = {
                 "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
                 "--set", "wedge.outputs=4", "--set", "surface.every=100", "--set", "surface.diffusivity=0.5",
                 "--set", "surface.deposition=true"],
+    # A wedge on a deflecting base (docs/isostasy.md): its series gains the base's columns.
+    "isostasy": ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
+                 "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
+                 "--set", "wedge.outputs=4", "--set", "isostasy.model=airy", "--set", "isostasy.every=100"],
     "packing": ["--set", "run.experiment=packing", "--set", "particles.packing=random_discs",
                 "--set", "layer.length=10", "--set", "layer.thickness=3", "--set", "contact.kn=1000",
                 "--set", "settle.relax_time=1", "--set", "settle.ke_threshold=1e-3", "--set", "output.interval=2"],
@@ -76,7 +80,7 @@ def doc_tables():
 
 # Runs named after what they add to an experiment: the experiment they are, and the tag of the
 # doc's rows and tables only they write.
-VARIANTS = {"surface": ("wedge", "wedge with [surface]")}
+VARIANTS = {"surface": ("wedge", "wedge with [surface]"), "isostasy": ("wedge", "wedge with [isostasy]")}
 
 
 def documented_columns(csv_name, experiment):

@@ -1,0 +1,64 @@
+#!/usr/bin/python3
+"""The isostasy runs' table (docs/isostasy-evidence.md): for each wedge run in a folder, at
+S = 2, 4, 6 and 8, the wedge's height and fronts (measured above the deflected base), the base's
+deepest point and where, its height at the S-point, the foredeep's room under each front, the
+pro forebulge, the sediment laid so far; then each run's pro thrust sheets (orogen.analysis.cycles:
+step-outs of Dp of at least 0.5 h0, their number and mean length).
+
+    scripts/isostasy_table.py /work/runs/isostasy        (Markdown tables on standard output)
+"""
+
+import os
+import sys
+
+import numpy as np
+import pandas as pd
+
+from orogen.analysis.cycles import cycles
+
+AT = (2, 4, 6, 8)
+
+
+def series_of(path):
+    return pd.read_csv(os.path.join(path, "series.csv"), comment="#")
+
+
+def at_rows(name, s):
+    out = []
+    for S in AT:
+        r = s.iloc[(s.S - S).abs().argmin()]
+        get = lambda c: r[c] if c in r else np.nan  # noqa: E731
+        out.append(dict(run=name, S=round(r.S, 2), H=r.H, Dp=r.Dp, Dr=r.Dr, deepest=get("deflection_max"),
+                        x_deepest=get("x_deflection_max"), s_point=get("base_s_point"), basin_pro=get("basin_pro"),
+                        basin_retro=get("basin_retro"), bulge_pro=get("forebulge_pro"),
+                        deposited=get("area_deposited")))
+    return out
+
+
+def sheets(name, s):
+    _, summary = cycles(s.S.values, s.time.values, s.Dp.values, "pro")
+    return dict(run=name, pro_sheets=summary["n_steps"], mean_length=summary["mean_size"],
+                mean_spacing=summary["mean_spacing"])
+
+
+def main(folder):
+    shape, thrusts = [], []
+    for name in sorted(os.listdir(folder)):
+        path = os.path.join(folder, name)
+        if not os.path.isfile(os.path.join(path, "summary.csv")):
+            continue
+        s = series_of(path)
+        shape += at_rows(name, s)
+        thrusts.append(sheets(name, s))
+    fmt = lambda v: "-" if isinstance(v, float) and np.isnan(v) else (f"{v:.3g}" if isinstance(v, float) else str(v))  # noqa: E731
+    for table in (shape, thrusts):
+        frame = pd.DataFrame(table)
+        print("| " + " | ".join(frame.columns) + " |")
+        print("|" + "---|" * len(frame.columns))
+        for _, r in frame.iterrows():
+            print("| " + " | ".join(fmt(v) for v in r.values) + " |")
+        print()
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "runs/isostasy")

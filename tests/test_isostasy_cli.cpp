@@ -1,0 +1,100 @@
+// A wedge on a deflecting base end to end (docs/isostasy.md): the elastic plate with sediment
+// laid in its basins gives the same bits for one and two threads and across a kill and resume;
+// the base sinks under the wedge, its segments stay joined, the kinematic slab rides on it;
+// bad [isostasy] input is refused with exit 2 and nothing written.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "io/snapshot_reader.hpp"
+#include "refused_input.hpp"
+#include "same_outputs.hpp"
+#include "temp_dir_fixture.hpp"
+
+namespace fs = std::filesystem;
+using namespace orogen;
+using orogen::testing::expect_same_outputs;
+using orogen::testing::run_orogen;
+using orogen::testing::slurp;
+
+namespace {
+
+class IsostasyCli : public orogen::testing::TempDirTest {
+ protected:
+  void SetUp() override {
+    ::setenv("OMP_WAIT_POLICY", "passive", 0);  // see test_cli.cpp
+    TempDirTest::SetUp();
+  }
+};
+
+// A small wedge (h0 = 5) on a plate of flexural parameter 2 h0, solved every 100 steps, with
+// hillslopes, a river and deposition so that basins fill while the base moves (3 s on one core).
+const std::string kFlexure =
+    " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
+    " --set wedge.window=3 --set wedge.s_end=1.0 --set wedge.outputs=6"
+    " --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2"
+    " --set isostasy.model=flexure --set isostasy.rigidity=5 --set isostasy.every=100"
+    " --set surface.every=100 --set surface.diffusivity=0.2 --set surface.erodibility=0.02"
+    " --set surface.deposition=true"
+    " --set surface.base_level=1.02";
+
+}  // namespace
+
+TEST_F(IsostasyCli, AFlexedBaseIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
+  const fs::path one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
+  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";  // two threads take the parallel paths
+  auto r = run_orogen("run --out '" + one.string() + "' --threads 1" + kFlexure, dir_, env);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run_orogen("run --out '" + two.string() + "' --threads 2" + kFlexure, dir_, env);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_same_outputs(one, two, {"series.csv", "removals.csv", "checkpoint.bin"});
+  // Killed after its third output (checkpoint after the second): the base's move crosses it.
+  r = run_orogen("run --out '" + killed.string() + "' --threads 1 --abort-after-outputs 3" + kFlexure, dir_);
+  ASSERT_EQ(r.status, 137) << r.err;
+  r = run_orogen("run --resume '" + killed.string() + "'", dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_same_outputs(one, killed, {"series.csv", "removals.csv", "checkpoint.bin"});
+
+  // The base sank under the wedge, in one piece: each segment starts where the one before ends.
+  const SnapshotReader reader(one / "snapshots.h5");
+  const Snapshot last = reader.read(reader.count() - 1);
+  double deepest = 0;
+  const std::array<double, 4>* before = nullptr;
+  std::size_t segments = 0;
+  for (std::size_t k = 0; k < last.walls.size(); ++k) {
+    const auto& wall = last.walls[k];
+    if (wall[0] == wall[2]) continue;  // the vertical end wall
+    deepest = std::min({deepest, wall[1], wall[3]});
+    if (before) {
+      EXPECT_EQ((*before)[3], wall[1]) << "segment " << k;
+    }
+    before = &wall;
+    ++segments;
+  }
+  EXPECT_GT(segments, 20u);
+  EXPECT_LT(deepest, -0.2);  // d: under a wedge 0.25 h0 high
+  // No disc under the base it rides on (the kinematic slab included), none lost below it.
+  const auto& y = last.field("y");
+  for (std::size_t i = 0; i < last.size(); ++i) EXPECT_GT(y[i], deepest) << "disc " << last.id[i];
+  const std::string series = slurp(one / "series.csv");
+  EXPECT_NE(series.find("base_s_point"), std::string::npos);
+  EXPECT_NE(series.find("basin_pro"), std::string::npos);
+}
+
+TEST_F(IsostasyCli, BadIsostasyInputExitsWith2AndWritesNothing) {
+  orogen::testing::expect_refused({
+      {"--set isostasy.model=flexure", {"isostasy.rigidity", "greater than 0", "airy"}},
+      {"--set isostasy.model=airy --set isostasy.rigidity=10", {"isostasy.rigidity", "10", "flexure"}},
+      {"--set isostasy.model=flexure --set isostasy.rigidity=1e9", {"isostasy.rigidity", "1e+09", "beyond the model"}},
+      {"--set isostasy.model=airy --set isostasy.every=150", {"isostasy.every", "150", "multiple of 100"}},
+      {"--set isostasy.model=airy --set isostasy.mantle_density=0.8", {"isostasy.mantle_density", "0.8", ">= 1"}},
+      {"--set isostasy.model=elastic", {"isostasy.model", "elastic", "\"flexure\""}},
+  }, dir_);
+}
