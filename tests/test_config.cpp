@@ -63,7 +63,7 @@ TEST(Config, BadFilesNameSourceKeyValueAndAllowed) {
       {"[contact]\ndt = 0.1\n", {"contact.dt = 0.1", "did you mean 'time.dt'?"}},
       {"[contaact]\nkn = 5\n",
        {"contaact.kn = 5", "unknown section [contaact]", "did you mean [contact]?",
-        "sections: run, particles, layer, contact, time, neighbor, settle, wedge, surface, repose, singly, biaxial, scripted, analysis, output"}},
+        "sections: run, particles, layer, contact, time, neighbor, settle, wedge, surface, isostasy, repose, singly, biaxial, scripted, analysis, output"}},
       {"kn = 5\n", {"kn = 5", "every key belongs in a section: run, particles", "did you mean 'contact.kn'?"}},
       {"contact = 5\n", {"contact = 5", "expected a table"}},
       {"[contact]\nmu = 0.3\nkn = 0\n", {"line 3", "contact.kn = 0", "must be >= 0.001"}},

@@ -174,3 +174,21 @@ TEST(FluxBalance, SteadyStateRuleFindsTheKnownStep) {
   EXPECT_TRUE(std::isnan(f.ratio[4]));  // fewer than 5 intervals
   EXPECT_EQ(flux_balance(t, area, flux_in, 5, 1.1).steady_output, -1);
 }
+
+// Deposits (a run with surface.deposition): each column's sediment thickness is its deposits'
+// area over the column width, its age their area-weighted mean age; the kept particles carry
+// their deposition time (NaN: crust).
+TEST(ExhumationTracker, SedimentInEachColumnWithItsAge) {
+  ExhumationTracker tracker(grid(3, {0.5}));
+  OutputDiscs o = output(10, 100.0, {{1, 0.5, 0.1, 0.1}, {2, 1.5, 0.1, 0.1}, {3, 1.6, 0.3, 0.2}, {4, 2.5, 0.1, 0.1}});
+  o.deposition_time = {std::nan(""), 90.0, 60.0, std::nan("")};
+  const OutputRecord r = tracker.observe(o, {});
+  const double a2 = std::numbers::pi * 0.01, a3 = std::numbers::pi * 0.04;
+  EXPECT_DOUBLE_EQ(r.deposit_thickness[0], 0.0);
+  EXPECT_DOUBLE_EQ(r.deposit_thickness[1], a2 + a3);
+  EXPECT_DOUBLE_EQ(r.deposit_age[1], (a2 * 10 + a3 * 40) / (a2 + a3));
+  EXPECT_TRUE(std::isnan(r.deposit_age[2]));
+  ASSERT_EQ(r.particle_deposition_time.size(), 4u);
+  EXPECT_EQ(r.particle_deposition_time[2], 60.0);
+  EXPECT_TRUE(std::isnan(r.particle_deposition_time[0]));
+}

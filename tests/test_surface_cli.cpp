@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "io/hdf5_file.hpp"
+#include "io/hdf5_labelled.hpp"
 #include "io/snapshot_reader.hpp"
 #include "refused_input.hpp"
 #include "same_outputs.hpp"
@@ -100,6 +102,22 @@ TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
   std::size_t laid = 0;
   for (double t : last.field("deposition_time")) laid += std::isfinite(t) && t > 0;
   EXPECT_GT(laid, 0u);  // most deposits are eroded again in this small, fast-eroding run
+
+  // orogen analyze: each deposit's time along the particle dimension, the sediment per column.
+  r = run_orogen("analyze '" + one.string() + "'", dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const h5::File analysis = h5::File::open(one / "analysis.h5", h5::File::Mode::ReadOnly);
+  const auto ids = h5::read_block<std::int64_t>(analysis.id(), "particle", {0}, {h5::shape(analysis.id(), "particle")[0]});
+  const auto times = h5::read_block<double>(analysis.id(), "deposition_time", {0}, {ids.size()});
+  std::map<std::int64_t, double> laid_at;
+  for (std::size_t k = 0; k < ids.size(); ++k) laid_at[ids[k]] = times[k];
+  const auto& field = last.field("deposition_time");
+  for (std::size_t i = 0; i < last.size(); ++i) {
+    if (std::isnan(field[i])) EXPECT_TRUE(std::isnan(laid_at.at(last.id[i])));
+    else EXPECT_EQ(laid_at.at(last.id[i]), field[i]);
+  }
+  const auto thickness = h5::shape(analysis.id(), "deposit_thickness");
+  EXPECT_EQ(thickness[0], static_cast<hsize_t>(reader.count()));
 
   // The ledger: the model holds what entered, less what was eroded and left, plus what was laid.
   const auto rows = series_rows(one);

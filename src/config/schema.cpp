@@ -241,7 +241,7 @@ const std::vector<KeySpec>& schema() {
 
       // [isostasy]: a base that deflects under the wedge's load (issue 40, docs/isostasy.md)
       text("isostasy.model", "none", {"none", "airy", "flexure"},
-           "none: a rigid flat base; airy: each base segment sinks under its own column's load; flexure: the "
+           "none: a rigid flat base; airy: each base node sinks under the load averaged over 2 h0 around it; flexure: the "
            "base is a thin elastic plate over a fluid mantle (isostasy.rigidity)"),
       real("isostasy.mantle_density", 1.22, ge(1), le(10),
            "density of the mantle under the base over the grains' density (3300 / 2700 = 1.22) [-]"),

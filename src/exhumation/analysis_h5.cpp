@@ -51,6 +51,13 @@ std::vector<Var> variables() {
       {"surface_max_depth", tc, Type::F64, {"h0", "maximum depth ever reached by the disc at the surface"}},
       {"cum_eroded_area", tc, Type::F64, {"d^2", "disc area eroded from the column up to this output"}},
       {"cum_eroded_count", tc, Type::I64, {"1", "discs eroded from the column up to this output"}},
+      {"deposit_thickness", tc, Type::F64,
+       {"h0", "sediment laid by the surface laws (surface.deposition) in the column now: its discs' area over the "
+              "column width"}},
+      {"deposit_age", tc, Type::F64,
+       {"sqrt(d/g)", "area-weighted mean age of the sediment in the column (NaN: none)"}},
+      {"deposition_time", {"particle"}, Type::F64,
+       {"sqrt(d/g)", "model time the disc was laid as sediment (surface.deposition); NaN: not a deposit"}},
       {"surface_age", tcc, Type::F64, {"sqrt(d/g)", "age of the disc at the surface: " + kAge}},
       {"surface_unreset", tcc, Type::U8, {"1", "1: the disc at the surface was never deeper than the closure depth"}},
       {"jump_count", tcc, Type::I64, {"1", "outputs so far at which the surface age of the column fell (a jump)"}},
@@ -158,6 +165,7 @@ bool check_analysis_h5(hid_t root, const std::string& run_identity, const Analys
   if (file_nt < nt) mismatch("fewer outputs than the state counts");
   if (file_np < np) mismatch("fewer discs than the state counts");
   if (h5::read_block<std::int64_t>(root, "particle", {0}, {np}) != res.particle_ids) mismatch("other disc ids");
+  if (!h5::exists(root, "deposition_time")) mismatch("a file made before the deposits' datasets");
   return file_nt > nt || file_np > np;
 }
 
@@ -166,6 +174,7 @@ void trim_analysis_h5(hid_t root, const AnalysisResults& res) {
   h5::resize(root, "time", {nt});
   h5::resize(root, "particle", {np});
   for (const auto& v : variables()) {
+    if (v.dims == Strings{"particle"}) h5::resize(root, v.name, {np});
     if (v.dims.front() != "time" || v.dims.back() == "trajectory") continue;
     Shape s = h5::shape(root, v.name);
     s.front() = nt;
@@ -194,6 +203,13 @@ void append_analysis_h5(hid_t root, const OutputRecord& r, AnalysisResults& res,
   if (np > np_before) {
     h5::resize(root, "particle", {np});
     h5::write_block<std::int64_t>(root, "particle", {np_before}, {np - np_before}, view(fresh));
+    // When each new disc was laid, if it is a deposit: a constant of the disc.
+    std::unordered_map<std::int64_t, double> laid;
+    for (std::size_t j = 0; j < r.particle_id.size(); ++j) laid.emplace(r.particle_id[j], r.particle_deposition_time[j]);
+    std::vector<double> times;
+    for (auto id : fresh) times.push_back(laid.at(id));
+    h5::resize(root, "deposition_time", {np});
+    h5::write_block<double>(root, "deposition_time", {np_before}, {np - np_before}, view(times));
   }
 
   const auto scalar = [&](const std::string& name, auto value) {
@@ -220,6 +236,8 @@ void append_analysis_h5(hid_t root, const OutputRecord& r, AnalysisResults& res,
   row("surface_max_depth", r.top_max_depth);
   row("cum_eroded_area", r.cum_eroded_area);
   row("cum_eroded_count", r.cum_eroded_count);
+  row("deposit_thickness", r.deposit_thickness);
+  row("deposit_age", r.deposit_age);
   row("surface_age", r.surface_age);
   row("surface_unreset", r.surface_unreset);
   row("jump_count", r.jump_count);

@@ -90,6 +90,7 @@ OutputDiscs discs_of(const Snapshot& s) {
   d.x = s.field("x");
   d.y = s.field("y");
   d.radius = s.field("radius");
+  if (const auto laid = s.fields.find("deposition_time"); laid != s.fields.end()) d.deposition_time = laid->second;
   return d;
 }
 

@@ -95,6 +95,7 @@ OutputRecord ExhumationTracker::observe(const OutputDiscs& out, std::span<const 
       r.particle_y.push_back(static_cast<float>(out.y[j] / p_.h0));
       r.particle_depth.push_back(static_cast<float>(depth));
       r.particle_max_depth.push_back(static_cast<float>(q.ages.max_depth()));
+      r.particle_deposition_time.push_back(out.deposition_time.empty() ? kNaN : out.deposition_time[j]);
     }
   }
   // Ages of the kept particles, closure-major.
@@ -131,6 +132,7 @@ OutputRecord ExhumationTracker::observe(const OutputDiscs& out, std::span<const 
     }
     prev_surface_age_[cell] = now;
   }
+  record_deposits(out, r);
   r.jump_count = jump_count_;
   r.jump_total = jump_total_;
   r.cum_eroded_area = cum_area_;
@@ -138,6 +140,28 @@ OutputRecord ExhumationTracker::observe(const OutputDiscs& out, std::span<const 
   ++outputs_;
   last_step_ = out.step;
   return r;
+}
+
+// The sediment in each column (discs with a deposition time, by centre): its thickness, the
+// discs' area over the column width, and its area-weighted mean age. Basin stratigraphy at any
+// output is the deposits' positions there with analysis.h5's deposition_time.
+void ExhumationTracker::record_deposits(const OutputDiscs& out, OutputRecord& r) const {
+  const std::size_t ncol = p_.n_columns;
+  std::vector<double> area(ncol, 0.0), age(ncol, 0.0);
+  for (std::size_t j = 0; j < out.deposition_time.size(); ++j) {
+    if (std::isnan(out.deposition_time[j])) continue;
+    const double c = std::floor((out.x[j] - p_.x_lo) / p_.column_width);
+    if (c < 0 || c >= static_cast<double>(ncol)) continue;
+    const double a = std::numbers::pi * out.radius[j] * out.radius[j];
+    area[static_cast<std::size_t>(c)] += a;
+    age[static_cast<std::size_t>(c)] += a * (out.time - out.deposition_time[j]);
+  }
+  r.deposit_thickness.resize(ncol);
+  r.deposit_age.resize(ncol);
+  for (std::size_t c = 0; c < ncol; ++c) {
+    r.deposit_thickness[c] = area[c] / p_.column_width / p_.h0;
+    r.deposit_age[c] = area[c] > 0 ? age[c] / area[c] : kNaN;
+  }
 }
 
 }  // namespace orogen

@@ -27,6 +27,7 @@ struct OutputDiscs {
   double time = 0, S = 0;
   std::vector<std::int64_t> id;
   std::vector<double> x, y, radius;
+  std::vector<double> deposition_time;  // a run with surface.deposition: when each was laid (NaN: not a deposit); else empty
 };
 
 // A row of removals.csv with reason "eroded".
@@ -55,6 +56,7 @@ struct OutputRecord {
   double eroded_area = 0;          // eroded since the previous output [d^2]
   std::int64_t eroded_count = 0;   // eroded since the previous output
   std::vector<double> elevation, top_max_depth, cum_eroded_area;
+  std::vector<double> deposit_thickness, deposit_age;  // the sediment in each column now [h0], its mean age
   std::vector<std::int64_t> top_id, cum_eroded_count;
   std::vector<double> surface_age, jump_total;      // [closure][column]
   std::vector<std::uint8_t> surface_unreset;        // [closure][column]
@@ -62,6 +64,7 @@ struct OutputRecord {
   std::vector<std::int64_t> particle_id;
   std::vector<float> particle_x, particle_y, particle_depth, particle_max_depth;
   std::vector<float> particle_age;                  // [closure][particle]
+  std::vector<double> particle_deposition_time;     // per kept particle (NaN: not a deposit)
 };
 
 class ExhumationTracker {
@@ -100,6 +103,7 @@ class ExhumationTracker {
   std::int64_t outputs_ = 0, last_step_ = -1;
   ExhumationParams p_;
   void record_erosion(std::span<const ErosionEvent> eroded, OutputRecord& r);
+  void record_deposits(const OutputDiscs& out, OutputRecord& r) const;
 };
 
 }  // namespace orogen
