@@ -42,11 +42,13 @@ def late_outputs(run):
 
 
 def base_rows(walls):
-    """Rows of the pro and retro bases in an output's `walls` (both on y = 0; the pro base
-    reaches far ahead of the S-point)."""
-    flat = [i for i, w in enumerate(walls) if w[1] == 0 and w[3] == 0]
-    pro = [i for i in flat if min(walls[i][0], walls[i][2]) < -1e3]
-    return pro, [i for i in flat if i not in pro]
+    """Rows of the pro and retro bases in an output's `walls`: every wall that is not vertical
+    (the retro end wall is), the pro base's ending at or before the S-point. A rigid base is one
+    wall each side on y = 0; a deflecting one (docs/isostasy.md) is segments, nearly level, whose
+    x and y forces this analysis takes as the base's shear and normal ones."""
+    base = [i for i, w in enumerate(walls) if w[0] != w[2]]
+    pro = [i for i in base if max(walls[i][0], walls[i][2]) <= 0]
+    return pro, [i for i in base if i not in pro]
 
 
 def measure(run):
