@@ -14,6 +14,7 @@
 #include "experiments/settled_layer.hpp"
 #include "packing/packing.hpp"
 #include "experiments/spec_from_config.hpp"
+#include "experiments/surface_series.hpp"
 
 namespace orogen {
 namespace {
@@ -39,6 +40,24 @@ void SinglyVergentExperiment::setup(World& w) {
   w.set_wall_velocity(kBackstop, -spec_.speed, backstop.vy);
   w.set_wall_ends(kBackstop, backstop.ax, backstop.ay, backstop.bx, std::max(backstop.by, 6.0 * spec_.h0 + 20.0));
   initial_discs_ = static_cast<std::int64_t>(w.discs.size());
+  start_surface();
+  surface_.ledger().entered = disc_area(w);
+}
+
+void SinglyVergentExperiment::start_surface() {
+  constexpr int kSizes = 16;
+  std::vector<double> radii;
+  for (int k = 0; k < kSizes; ++k)
+    radii.push_back(0.5 * (spec_.packing.d_min + (spec_.packing.d_max - spec_.packing.d_min) * (k + 0.5) / kSizes));
+  SurfaceSpec s = spec_.surface;
+  if (s.column_width <= 0) s.column_width = spec_.column_width_factor * 0.25 * (spec_.packing.d_min + spec_.packing.d_max);
+  surface_ = SurfaceProcesses(std::move(s), radii, spec_.packing.seed);
+}
+
+bool SinglyVergentExperiment::set_surface_script(SurfaceScript script) {
+  spec_.surface.script = script;
+  surface_.set_script(std::move(script));
+  return true;
 }
 
 // A wedge h0 high at the backstop whose surface falls at initial_slope towards the far wall
@@ -56,23 +75,32 @@ void SinglyVergentExperiment::cut_wedge(World& w) {
 bool SinglyVergentExperiment::advance(World& w) {
   if (shortening(w) >= spec_.shortening) return false;
   w.advance();
-  if (w.step % kHousekeepingEvery == 0) {
-    // A disc squeezed out through a wall's end would fall for ever.
-    const auto& d = w.discs;
-    std::vector<std::uint8_t> flags(d.size(), 0);
-    bool any = false;
-    for (std::size_t i = 0; i < d.size(); ++i) {
-      flags[i] = d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.wall(kBackstop).ax + 2.0;
-      any |= flags[i] != 0;
-    }
-    if (any) w.remove(flags, RemovalReason::LeftDomain);
-  }
+  // The laws act between the far wall and the backstop.
+  if (surface_.updates_at(w)) surface_.update(w, 0.0, w.wall(kBackstop).ax, spec_.surface.every * w.dt);
+  if (w.step % kHousekeepingEvery == 0) remove_strays(w);
   return true;
+}
+
+// A disc squeezed out through a wall's end would fall for ever.
+void SinglyVergentExperiment::remove_strays(World& w) {
+  const auto& d = w.discs;
+  std::vector<std::uint8_t> flags(d.size(), 0);
+  bool any = false;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    flags[i] = d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.wall(kBackstop).ax + 2.0;
+    any |= flags[i] != 0;
+  }
+  if (!any) return;
+  const double before = surface_.active() ? disc_area(w) : 0.0;
+  w.remove(flags, RemovalReason::LeftDomain);
+  if (surface_.active()) surface_.ledger().left += before - disc_area(w);
 }
 
 SinglyVergentShape SinglyVergentExperiment::shape(const World& w) const {
   SinglyVergentShape g;
-  const auto& d = w.discs;
+  // The crust without the deposits (a filled foreland is not the wedge).
+  const std::unique_ptr<Discs> crust = crust_discs(surface_, spec_.surface.deposition, w, {});
+  const auto& d = crust ? *crust : w.discs;
   g.backstop = w.wall(kBackstop).ax;
   const Surface s = measure_surface(d, 0.0, g.backstop, spec_.column_width_factor * mean_radius(d));
   // The wedge: surface columns raised by a disc diameter, contiguous from the backstop (gaps of
@@ -142,7 +170,17 @@ constexpr std::array kSeries = {
 
 }  // namespace
 
-std::vector<SeriesColumn> SinglyVergentExperiment::columns() const { return series_columns(kSeries); }
+std::vector<SeriesColumn> SinglyVergentExperiment::columns() const {
+  auto out = series_columns(kSeries);
+  if (surface_.active()) out.insert(out.end(), ledger_columns().begin(), ledger_columns().end());
+  return out;
+}
+
+std::vector<SnapshotField> SinglyVergentExperiment::fields(const World& w) const {
+  auto out = displacements_.fields(w);
+  if (spec_.surface.deposition) out.push_back(deposition_field(surface_, w));
+  return out;
+}
 
 std::vector<double> SinglyVergentExperiment::measure(const World& w) const {
   const SinglyVergentShape g = shape(w);
@@ -162,7 +200,10 @@ std::vector<double> SinglyVergentExperiment::measure(const World& w) const {
                                    .taper_mean = or_nan(g.taper_mean * kDegPerRad),
                                    .slip_base = base.slip_fraction(),
                                    .n_discs = static_cast<double>(w.discs.size())};
-  return series_values(kSeries, sample);
+  auto out = series_values(kSeries, sample);
+  if (surface_.active())
+    for (double v : ledger_values(surface_, w)) out.push_back(v);
+  return out;
 }
 
 std::vector<std::pair<std::string, double>> SinglyVergentExperiment::scalars(const World& w) const {
@@ -205,11 +246,14 @@ std::vector<SummaryValue> SinglyVergentExperiment::summary(const World& w) const
 void SinglyVergentExperiment::save(ArchiveWriter& out) const {
   state_fields(*this, ArchiveSaver(out));
   displacements_.save(out, "singly");
+  if (surface_.active()) SurfaceProcesses::state_fields(surface_, ArchiveSaver(out));
 }
 
 void SinglyVergentExperiment::load(const ArchiveReader& in) {
   state_fields(*this, ArchiveLoader(in));
   displacements_.load(in, "singly");
+  start_surface();
+  if (surface_.active()) SurfaceProcesses::state_fields(surface_, ArchiveLoader(in));
 }
 
 std::string SinglyVergentExperiment::status(const World& w) const {
@@ -234,6 +278,7 @@ std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& c) {
   s.outputs = c.get_int32("singly.outputs");
   s.steady_from = c.get_float("singly.steady_from");
   read_layer_keys(c, s);
+  s.surface = read_surface_keys(c, s.h0);
   check_material_size(c, s.length, s.h0, {"layer.length", "layer.thickness"});
   if (s.shortening * s.h0 > 0.8 * s.length)
     throw config_error(c.sources_of({"singly.shortening", "layer.length", "layer.thickness"}), "singly.shortening",

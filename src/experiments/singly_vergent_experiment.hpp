@@ -9,6 +9,7 @@
 #include "experiments/experiment.hpp"
 #include "io/archive_fields.hpp"
 #include "experiments/packing_experiment.hpp"
+#include "surface/surface_processes.hpp"
 
 namespace orogen {
 
@@ -25,6 +26,7 @@ struct SinglyVergentSpec {
   double column_width_factor = 2.3;
   PackingSpec packing;
   SettleSpec settle;
+  SurfaceSpec surface;       // the surface laws ([surface]; none by default), a Python law
 };
 
 // The wedge's shape at one moment (lengths in d, angles in rad).
@@ -46,9 +48,7 @@ class SinglyVergentExperiment final : public Experiment {
   bool advance(World& world) override;
   std::vector<SeriesColumn> columns() const override;
   std::vector<double> measure(const World& world) const override;
-  std::vector<SnapshotField> fields(const World& world) const override {
-    return displacements_.fields(world);
-  }
+  std::vector<SnapshotField> fields(const World& world) const override;
   std::vector<std::pair<std::string, double>> scalars(const World& world) const override;
   void after_output(const World& world) override;
   void save(ArchiveWriter& out) const override;
@@ -65,9 +65,14 @@ class SinglyVergentExperiment final : public Experiment {
   // Backstop displacement / h0.
   double shortening(const World& world) const { return spec_.speed * world.time / spec_.h0; }
   SinglyVergentShape shape(const World& world) const;
+  bool set_surface_script(SurfaceScript script) override;
 
  private:
   void cut_wedge(World& w);
+  void remove_strays(World& w);
+  // (Re)makes the surface processes from the spec (setup and load): columns 2.3 mean radii of
+  // the packing's sizes wide, deposits drawn from those sizes, fixed for the run's life.
+  void start_surface();
 
   SinglyVergentSpec spec_;
   // The checkpointed state, each field once with its key, for save() and load()
@@ -83,6 +88,7 @@ class SinglyVergentExperiment final : public Experiment {
   // Shortening and taper at each output, for the steady-state statistics of the summary.
   std::vector<double> history_s_, history_taper_;
   DisplacementTracker displacements_;
+  SurfaceProcesses surface_;  // the surface laws and the area ledger
 };
 
 std::unique_ptr<Experiment> make_singly_vergent_experiment(const Config& config);

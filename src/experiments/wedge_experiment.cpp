@@ -14,6 +14,7 @@
 #include "experiments/series_table.hpp"
 #include "experiments/layer_units.hpp"
 #include "experiments/settled_layer.hpp"
+#include "experiments/surface_series.hpp"
 
 namespace orogen {
 namespace {
@@ -275,13 +276,7 @@ Surface WedgeExperiment::surface(const Discs& discs) const {
 // thickening rather than its sinking (docs/isostasy.md). Null where neither applies: measure
 // the world's discs.
 std::unique_ptr<Discs> WedgeExperiment::crust(const World& w) const {
-  if (!spec_.surface.deposition && !base_.active()) return nullptr;
-  auto out = std::make_unique<Discs>();
-  const auto& d = w.discs;
-  for (std::size_t i = 0; i < d.size(); ++i)
-    if (std::isnan(surface_.deposition_time(d.id[i])))
-      out->add(d.id[i], d.x[i], d.y[i] - base_height(w, d.x[i]), d.radius[i]);
-  return out;
+  return crust_discs(surface_, spec_.surface.deposition, w, on_base(w));
 }
 
 namespace {
@@ -318,29 +313,6 @@ constexpr std::array kWedgeSeries = {
 
 }  // namespace
 
-namespace {
-
-// The area ledger of a run with surface laws (surface/surface_processes.hpp), after the wedge's
-// columns: area_model equals area_entered - area_eroded + area_deposited - area_left to round-off.
-const std::vector<SeriesColumn>& ledger_columns() {
-  static const std::vector<SeriesColumn> columns = {
-      {"area_entered", "area of the discs ever added (initial layer and inflow; not deposits) [d^2]"},
-      {"area_eroded", "area of the discs eroded so far, by the threshold and the surface laws [d^2]"},
-      {"area_eroded_hillslope", "of area_eroded: removals logged eroded_hillslope [d^2]"},
-      {"area_eroded_fluvial", "of area_eroded: removals logged eroded_fluvial [d^2]"},
-      {"area_eroded_script", "of area_eroded: removals logged eroded_script (a Python law) [d^2]"},
-      {"area_deposited", "area of the sediment discs laid so far [d^2]"},
-      {"area_left", "area of the discs that left the domain [d^2]"},
-      {"area_model", "area of the discs in the model now [d^2]"},
-      {"area_recycled",
-       "area the laws' net erosion filled into the forelands (surface.recycling), in the continuum [d^2]"},
-      {"area_bypassed", "area to recycle that found no room below surface.base_level and left the model [d^2]"},
-  };
-  return columns;
-}
-
-}  // namespace
-
 std::vector<SeriesColumn> WedgeExperiment::columns() const {
   auto out = series_columns(kWedgeSeries);
   if (surface_.active()) out.insert(out.end(), ledger_columns().begin(), ledger_columns().end());
@@ -351,12 +323,8 @@ std::vector<SeriesColumn> WedgeExperiment::columns() const {
 std::vector<double> WedgeExperiment::measure(const World& w) const {
   const WedgeSample m = sample(w);
   auto out = series_values(kWedgeSeries, m);
-  if (surface_.active()) {
-    const AreaLedger& l = surface_.ledger();
-    for (double v : {l.entered, l.eroded_total(), l.eroded[0], l.eroded[1], l.eroded[2], l.deposited, l.left,
-                     disc_area(w), l.recycled, l.bypassed})
-      out.push_back(v);
-  }
+  if (surface_.active())
+    for (double v : ledger_values(surface_, w)) out.push_back(v);
   if (base_.active())
     for (double v : isostasy_values(w, m.Dp, m.Dr)) out.push_back(v);
   return out;
@@ -392,11 +360,7 @@ WedgeSample WedgeExperiment::sample(const World& w) const {
 
 std::vector<SnapshotField> WedgeExperiment::fields(const World& w) const {
   auto out = displacements_.fields(w);
-  if (!spec_.surface.deposition) return out;
-  SnapshotField laid{"deposition_time", std::vector<double>(w.discs.size()), "sqrt(d/g)",
-                     "model time the disc was laid as sediment (surface.deposition); NaN: not a deposit"};
-  for (std::size_t i = 0; i < w.discs.size(); ++i) laid.values[i] = surface_.deposition_time(w.discs.id[i]);
-  out.push_back(std::move(laid));
+  if (spec_.surface.deposition) out.push_back(deposition_field(surface_, w));
   return out;
 }
 

@@ -36,6 +36,12 @@ RUNS = {
                 "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
                 "--set", "wedge.outputs=4", "--set", "surface.every=100", "--set", "surface.diffusivity=0.5",
                 "--set", "surface.deposition=true"],
+    # A singly-vergent wedge with surface laws and deposits: the same ledger and field.
+    "singly_surface": ["--set", "run.experiment=singly_vergent", "--set", "particles.packing=random_discs",
+                       "--set", "layer.length=40", "--set", "layer.thickness=5", "--set", "contact.kn=2000",
+                       "--set", "singly.speed=0.05", "--set", "singly.shortening=0.5", "--set", "singly.outputs=3",
+                       "--set", "surface.every=100", "--set", "surface.diffusivity=0.3",
+                       "--set", "surface.deposition=true"],
     # A wedge on a deflecting base (docs/isostasy.md): its series gains the base's columns.
     "isostasy": ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
                  "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
@@ -80,7 +86,8 @@ def doc_tables():
 
 # Runs named after what they add to an experiment: the experiment they are, and the tag of the
 # doc's rows and tables only they write.
-VARIANTS = {"surface": ("wedge", "wedge with [surface]"), "isostasy": ("wedge", "wedge with [isostasy]")}
+VARIANTS = {"surface": ("wedge", "with [surface]"), "singly_surface": ("singly_vergent", "with [surface]"),
+            "isostasy": ("wedge", "wedge with [isostasy]")}
 
 
 def documented_columns(csv_name, experiment):
