@@ -12,6 +12,7 @@ import sys
 import tempfile
 import unittest
 
+import h5py
 import numpy as np
 import xarray as xr
 
@@ -184,6 +185,49 @@ class ExhumationCharts(unittest.TestCase):
     def test_refuses_a_folder_without_analysis(self):
         self.assertEqual(exhumation_charts.main([self.tmp]), 2)
         self.assertEqual(exhumation_charts.main([self.run_dir, "--positions", "a,b", "--out", self.tmp]), 2)
+
+
+@unittest.skipUnless(BINARY, "OROGEN_BINARY not set")
+class BasinsAndBase(unittest.TestCase):
+    """A small wedge with a river, deposition and a plate under it (docs/surface.md,
+    docs/isostasy.md): the charts of its sediment and its base."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="orogen_basins_")
+        cls.run_dir = os.path.join(cls.tmp, "run")
+        keys = SMALL + ("wedge.s_end=0.6 surface.every=100 surface.diffusivity=0.2 surface.erodibility=0.02 "
+                        "surface.deposition=true surface.base_level=1.02 isostasy.model=flexure "
+                        "isostasy.rigidity=5 isostasy.every=100").split()
+        subprocess.run([BINARY, "run", "--out", cls.run_dir, "--threads", "1"] + [a for k in keys for a in ("--set", k)],
+                       check=True, capture_output=True)
+        subprocess.run([BINARY, "analyze", cls.run_dir], check=True, capture_output=True)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp)
+
+    def test_sediment_and_base_charts(self):
+        out = os.path.join(self.tmp, "charts")
+        self.assertEqual(exhumation_charts.main([self.run_dir, "--out", out]), 0)
+        for name in exhumation_charts.FIGURES + exhumation_charts.BASIN_FIGURES + exhumation_charts.BASE_FIGURES:
+            self.assertTrue(os.path.getsize(os.path.join(out, name)) > 1000, name)
+        ds = orogen_analysis.load(self.run_dir)
+        laid = np.isfinite(ds.deposition_time.values)
+        self.assertTrue(laid.any())
+        # The sediment per column is the area of the deposits there (the last snapshot's) over
+        # the column width, in h0.
+        with h5py.File(os.path.join(self.run_dir, "snapshots.h5"), "r") as f:
+            g = f[sorted(k for k in f if k.startswith("output_"))[-1]]
+            x, r, t = g["x"][()], g["radius"][()], g["deposition_time"][()]
+            h0 = float(f.attrs["h0"])
+        width = float(ds.column[1] - ds.column[0]) * h0
+        lo = float(ds.column[0]) * h0 - width / 2
+        column = np.floor((x - lo) / width).astype(int)
+        ok = np.isfinite(t) & (column >= 0) & (column < ds.sizes["column"])
+        expected = np.bincount(column[ok], weights=np.pi * r[ok] ** 2, minlength=ds.sizes["column"]) / width / h0
+        np.testing.assert_allclose(ds.deposit_thickness.values[-1], expected, rtol=1e-9, atol=1e-12)
+        self.assertGreater(expected.sum(), 0)
 
 
 if __name__ == "__main__":

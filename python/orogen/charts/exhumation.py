@@ -25,11 +25,25 @@ RUN_DIR/charts/exhumation), each file atomically (temporary name, then os.replac
                                 far, outputs of low erosion in grey, step-outs marked; below, the
                                 gap between the two fronts, a proxy of the pro-wedge's steepness
                                 (6.6, 6.7)
+
+A run that laid sediment (surface.deposition, docs/surface.md) adds:
+
+    spacetime_deposits.png      x, S, coloured by the sediment's thickness in each column
+    basin_strata.png            the last output's discs: crust grey, sediment coloured by the S at
+                                which it was laid (growth strata), with the sediment's mean age per column
+
+A run on a deflecting base ([isostasy], docs/isostasy.md) adds:
+
+    base_deflection.png         the base at the S-point, its deepest point and under each front
+                                against S; below, the base's profile at a few outputs
 """
 
 import argparse
 import os
 import sys
+
+import h5py
+import pandas as pd
 
 import numpy as np
 import matplotlib
@@ -44,6 +58,10 @@ FIGURES = ("spacetime_elevation.png", "spacetime_max_depth.png", "spacetime_cum_
            "spacetime_surface_age.png", "max_depth_positions.png", "age_positions.png",
            "age_jump_stats.png", "trajectories.png", "horizon_frames.png", "flux.png",
            "pro_cycle.png")
+
+
+BASIN_FIGURES = ("spacetime_deposits.png", "basin_strata.png")
+BASE_FIGURES = ("base_deflection.png",)
 
 
 def save(fig, out, name):
@@ -173,6 +191,70 @@ def age_jump_stats(ds, ci, out):
     save(fig, out, "age_jump_stats.png")
 
 
+def has_deposits(ds):
+    return "deposition_time" in ds and bool(np.isfinite(ds.deposition_time.values).any())
+
+
+def basin_strata(ds, out):
+    """The last output's discs, the sediment coloured by the S at which it was laid."""
+    last = ds.sizes["time"] - 1
+    x, y = ds.x.isel(time=last).values, ds.y.isel(time=last).values
+    laid = ds.deposition_time.values
+    here = np.isfinite(x)
+    crust, sediment = here & ~np.isfinite(laid), here & np.isfinite(laid)
+    laid_s = np.interp(laid[sediment], ds.time.values, ds.S.values)
+    fig, (ax, ax_age) = plt.subplots(2, 1, figsize=(10, 5.5), sharex=True, gridspec_kw={"height_ratios": [3, 1]})
+    ax.scatter(x[crust], y[crust], s=2, c="0.75", lw=0)
+    m = ax.scatter(x[sediment], y[sediment], s=5, c=laid_s, cmap="viridis", lw=0)
+    fig.colorbar(m, ax=ax, label="S when laid")
+    ax.set_ylabel("y [h0]")
+    ax.set_title("S = %.2f: growth strata (sediment by the S it was laid at; crust grey; vertical exaggeration)"
+                 % float(ds.S[last]), fontsize=10)
+    ys = y[here]
+    ax.set_ylim(ys.min() - 0.2, ys.max() + 0.3)  # vertically exaggerated: the strata are thin
+    ax_age.plot(ds.column.values, ds.deposit_thickness.isel(time=last).values, color="tab:brown")
+    ax_age.set_ylabel("sediment [h0]", color="tab:brown")
+    twin = ax_age.twinx()
+    twin.plot(ds.column.values, ds.deposit_age.isel(time=last).values, color="tab:blue", lw=0.8)
+    twin.set_ylabel("mean age [sqrt(d/g)]", color="tab:blue")
+    ax_age.set_xlabel("x from the S-point [h0]")
+    save(fig, out, "basin_strata.png")
+
+
+def base_deflection(run, out, profiles=4):
+    """The deflecting base through time (series.csv) and its profile at a few outputs (the
+    snapshots' walls, lengths over h0)."""
+    series = pd.read_csv(os.path.join(run, "series.csv"), comment="#")
+    fig, (ax, ax_p) = plt.subplots(2, 1, figsize=(9, 6.5))
+    ax.plot(series.S, series.base_s_point, label="at the S-point")
+    ax.plot(series.S, -series.deflection_max, label="deepest")
+    ax.plot(series.S, -series.basin_pro, label="under the pro front")
+    ax.plot(series.S, -series.basin_retro, label="under the retro front")
+    ax.set_xlabel("S = v t / h0")
+    ax.set_ylabel("base height [h0]")
+    ax.set_title("the base under the wedge through time (negative: sunk)", fontsize=10)
+    ax.legend(fontsize=8)
+    with h5py.File(os.path.join(run, "snapshots.h5"), "r") as f:
+        h0 = float(f.attrs["h0"])
+        names = sorted(k for k in f if k.startswith("output_"))
+        for k in sorted(set(int(round(v)) for v in np.linspace(0, len(names) - 1, profiles))):
+            walls = f[names[k]]["walls"][()]
+            walls = walls[(walls[:, 0] != walls[:, 2]) & (np.abs(walls[:, 0]) < 1e6)]
+            walls = walls[np.argsort(walls[:, 0])]
+            ax_p.plot(np.append(walls[:, 0], walls[-1, 2]) / h0, np.append(walls[:, 1], walls[-1, 3]) / h0,
+                      label="S = %.2f" % float(f[names[k]].attrs.get("S", np.nan)))
+    ax_p.set_xlabel("x from the S-point [h0]")
+    ax_p.set_ylabel("base [h0]")
+    ax_p.set_title("the base's profile at a few outputs (vertical exaggeration)", fontsize=10)
+    ax_p.legend(fontsize=8)
+    save(fig, out, "base_deflection.png")
+
+
+def has_deflecting_base(run):
+    path = os.path.join(run, "series.csv")
+    return os.path.isfile(path) and "base_s_point" in pd.read_csv(path, comment="#", nrows=1).columns
+
+
 def make_all(run, out=None, closure=0.5, positions=None, frames=4):
     ds = orogen_analysis.load(run)
     out = out or os.path.join(run if os.path.isdir(run) else os.path.dirname(run), "charts", "exhumation")
@@ -195,6 +277,13 @@ def make_all(run, out=None, closure=0.5, positions=None, frames=4):
     horizon_frames(ds, out, frames)
     flux(ds, out)
     pro_cycle(run, ds, out)
+    run_dir = run if os.path.isdir(run) else os.path.dirname(run)
+    if has_deposits(ds):
+        spacetime(ds, ds.deposit_thickness, "sediment in each column", "sediment [h0]", "YlOrBr", out,
+                  "spacetime_deposits.png")
+        basin_strata(ds, out)
+    if has_deflecting_base(run_dir):
+        base_deflection(run_dir, out)
     return out
 
 
@@ -219,7 +308,7 @@ def main(argv=None):
         print("error: --frames %d: must be at least 1" % a.frames, file=sys.stderr)
         return 2
     out = make_all(a.run, a.out, a.closure, positions, a.frames)
-    print("wrote %d figures to %s" % (len(FIGURES), out))
+    print("wrote %d figures to %s" % (len([f for f in os.listdir(out) if f.endswith(".png")]), out))
     return 0
 
 
