@@ -55,6 +55,7 @@ class IsostaticBase {
 
   template <class Self, class F>
   static void state_fields(Self& self, F&& f) {
+    f("isostasy.nodes", self.x_);  // fixed for the run's life: an extended run (a larger s_end) keeps them
     f("isostasy.from", self.from_);
     f("isostasy.to", self.to_);
     f("isostasy.move_start", self.move_start_);
