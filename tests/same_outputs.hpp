@@ -1,7 +1,7 @@
 #pragma once
 // Two run folders that must hold the same results: every output's every field bit for bit (NaN
 // included), the same discs and materials, and the named files byte for byte. For the tests of
-// one and two threads and of a kill and resume.
+// one and two threads and of a kill and resume; and the three runs those tests make.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -31,6 +31,24 @@ inline void expect_same_outputs(const std::filesystem::path& a, const std::files
     EXPECT_EQ(sa.material, sb.material);
   }
   for (const auto& f : files) EXPECT_TRUE(slurp(a / f) == slurp(b / f)) << f;
+}
+
+// Runs `orogen run ARGS` into one, two and killed under `dir`: on one thread, on two (the small
+// runs down the parallel paths) and killed after its third output then resumed; all three must
+// hold the same results (series, removals, checkpoint and every output).
+inline void expect_same_runs(const std::string& args, const std::filesystem::path& dir) {
+  const std::filesystem::path one = dir / "one", two = dir / "two", killed = dir / "killed";
+  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
+  auto r = run_orogen("run --out '" + one.string() + "' --threads 1" + args, dir, env);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run_orogen("run --out '" + two.string() + "' --threads 2" + args, dir, env);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_same_outputs(one, two, {"series.csv", "removals.csv", "checkpoint.bin"});
+  r = run_orogen("run --out '" + killed.string() + "' --threads 1 --abort-after-outputs 3" + args, dir);
+  ASSERT_EQ(r.status, 137) << r.err;
+  r = run_orogen("run --resume '" + killed.string() + "'", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_same_outputs(one, killed, {"series.csv", "removals.csv", "checkpoint.bin"});
 }
 
 }  // namespace orogen::testing

@@ -69,6 +69,19 @@ std::vector<std::map<std::string, double>> series_rows(const fs::path& run) {
   return rows;
 }
 
+// The ledger at every output: the model holds what entered, less what was eroded and left, plus
+// what was laid (to round-off); the laws' shares add up to no more than the erosion.
+void expect_ledger_balanced(const std::vector<std::map<std::string, double>>& rows) {
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const auto& row = rows[k];
+    const double expected =
+        row.at("area_entered") - row.at("area_eroded") + row.at("area_deposited") - row.at("area_left");
+    EXPECT_NEAR(row.at("area_model"), expected, 1e-12 * row.at("area_entered")) << "output " << k;
+    EXPECT_GE(row.at("area_eroded") + 1e-9,
+              row.at("area_eroded_hillslope") + row.at("area_eroded_fluvial") + row.at("area_eroded_script"));
+  }
+}
+
 std::size_t count_of(const std::string& text, const std::string& word) {
   std::size_t n = 0;
   for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
@@ -78,20 +91,10 @@ std::size_t count_of(const std::string& text, const std::string& word) {
 }  // namespace
 
 TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
-  const fs::path one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
-  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";  // two threads take the parallel paths
-  auto r = run_orogen("run --out '" + one.string() + "' --threads 1" + kEveryLaw, dir_, env);
-  ASSERT_EQ(r.status, 0) << r.err;
-  r = run_orogen("run --out '" + two.string() + "' --threads 2" + kEveryLaw, dir_, env);
-  ASSERT_EQ(r.status, 0) << r.err;
-  expect_same_outputs(one, two, {"series.csv", "removals.csv", "checkpoint.bin"});
   // Killed after its third output (checkpoint after the second): the carry, the ledger and the
   // deposits' times cross the resume.
-  r = run_orogen("run --out '" + killed.string() + "' --threads 1 --abort-after-outputs 3" + kEveryLaw, dir_);
-  ASSERT_EQ(r.status, 137) << r.err;
-  r = run_orogen("run --resume '" + killed.string() + "'", dir_);
-  ASSERT_EQ(r.status, 0) << r.err;
-  expect_same_outputs(one, killed, {"series.csv", "removals.csv", "checkpoint.bin"});
+  ASSERT_NO_FATAL_FAILURE(orogen::testing::expect_same_runs(kEveryLaw, dir_));
+  const fs::path one = dir_ / "one";
 
   // Each removal with its law; deposits tagged with their time.
   const std::string removals = slurp(one / "removals.csv");
@@ -104,7 +107,7 @@ TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
   EXPECT_GT(laid, 0u);  // most deposits are eroded again in this small, fast-eroding run
 
   // orogen analyze: each deposit's time along the particle dimension, the sediment per column.
-  r = run_orogen("analyze '" + one.string() + "'", dir_);
+  const auto r = run_orogen("analyze '" + one.string() + "'", dir_);
   ASSERT_EQ(r.status, 0) << r.err;
   const h5::File analysis = h5::File::open(one / "analysis.h5", h5::File::Mode::ReadOnly);
   const auto ids = h5::read_block<std::int64_t>(analysis.id(), "particle", {0}, {h5::shape(analysis.id(), "particle")[0]});
@@ -122,13 +125,7 @@ TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
   // The ledger: the model holds what entered, less what was eroded and left, plus what was laid.
   const auto rows = series_rows(one);
   ASSERT_EQ(rows.size(), 7u);
-  for (const auto& row : rows) {
-    const double expected =
-        row.at("area_entered") - row.at("area_eroded") + row.at("area_deposited") - row.at("area_left");
-    EXPECT_NEAR(row.at("area_model"), expected, 1e-12 * row.at("area_entered")) << "S = " << row.at("S");
-    EXPECT_GE(row.at("area_eroded") + 1e-9,
-              row.at("area_eroded_hillslope") + row.at("area_eroded_fluvial") + row.at("area_eroded_script"));
-  }
+  expect_ledger_balanced(rows);
   EXPECT_GT(rows.back().at("area_deposited"), 5.0);  // a dozen discs or more
   EXPECT_GT(rows.back().at("area_recycled"), 0.0);
 }
@@ -168,26 +165,14 @@ TEST_F(SurfaceCli, TheSinglyVergentWedgeErodesAndDepositsAlike) {
       " --set singly.outputs=6 --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2"
       " --set surface.every=100 --set surface.diffusivity=0.3 --set surface.erodibility=0.05"
       " --set surface.deposition=true --set surface.base_level=1.0";
-  const fs::path one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
-  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
-  auto r = run_orogen("run --out '" + one.string() + "' --threads 1" + singly, dir_, env);
-  ASSERT_EQ(r.status, 0) << r.err;
-  r = run_orogen("run --out '" + two.string() + "' --threads 2" + singly, dir_, env);
-  ASSERT_EQ(r.status, 0) << r.err;
-  expect_same_outputs(one, two, {"series.csv", "removals.csv", "checkpoint.bin"});
-  r = run_orogen("run --out '" + killed.string() + "' --threads 1 --abort-after-outputs 3" + singly, dir_);
-  ASSERT_EQ(r.status, 137) << r.err;
-  r = run_orogen("run --resume '" + killed.string() + "'", dir_);
-  ASSERT_EQ(r.status, 0) << r.err;
-  expect_same_outputs(one, killed, {"series.csv", "removals.csv", "checkpoint.bin"});
+  // One and two threads, and killed after its third output (checkpoint after the second) then
+  // resumed: the same results.
+  ASSERT_NO_FATAL_FAILURE(orogen::testing::expect_same_runs(singly, dir_));
+  const fs::path one = dir_ / "one";
   const std::string removals = slurp(one / "removals.csv");
   EXPECT_GT(count_of(removals, ",eroded_fluvial\n") + count_of(removals, ",eroded_hillslope\n"), 20u) << removals;
   const auto rows = series_rows(one);
   ASSERT_EQ(rows.size(), 7u);
-  for (const auto& row : rows) {
-    const double expected =
-        row.at("area_entered") - row.at("area_eroded") + row.at("area_deposited") - row.at("area_left");
-    EXPECT_NEAR(row.at("area_model"), expected, 1e-12 * row.at("area_entered")) << "shortening " << row.at("shortening");
-  }
+  expect_ledger_balanced(rows);
   EXPECT_GT(rows.back().at("area_eroded"), 10.0);
 }
