@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "experiments/wedge_experiment.hpp"
-#include "util/units.hpp"
 
 namespace orogen {
 namespace {
@@ -20,7 +19,8 @@ bool names_base(const std::string& wall, std::string_view base) {
 }  // namespace
 
 void WedgeExperiment::start_isostasy() {
-  // Nodes over every x the pro-side window can reach in the run, and the retro layer.
+  // Nodes over every x the pro-side window can reach in the run, and the retro layer (a resumed
+  // run then loads the nodes it started with: an extended run keeps them).
   const double x_lo = -(spec_.initial_active + spec_.window + spec_.tile_length + spec_.s_end) * spec_.h0;
   base_ = IsostaticBase(spec_.isostasy, x_lo, x_end_ + 1, 0.0);  // the load: build_layer, or the checkpoint
 }
