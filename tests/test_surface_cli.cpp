@@ -160,8 +160,8 @@ TEST_F(SurfaceCli, ALawThatWouldRemoveTheLayerStopsWithADiagnosis) {
 // with its law, the ledger balanced (1 s on one core).
 TEST_F(SurfaceCli, TheSinglyVergentWedgeErodesAndDepositsAlike) {
   const std::string singly =
-      " --set run.experiment=singly_vergent --set particles.packing=random_discs --set layer.length=60"
-      " --set layer.thickness=6 --set contact.kn=2000 --set singly.speed=0.05 --set singly.shortening=2"
+      " --set run.experiment=singly_vergent --set particles.packing=random_discs --set layer.length=40"
+      " --set layer.thickness=6 --set contact.kn=2000 --set singly.speed=0.05 --set singly.shortening=1.5"
       " --set singly.outputs=6 --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2"
       " --set surface.every=100 --set surface.diffusivity=0.3 --set surface.erodibility=0.05"
       " --set surface.deposition=true --set surface.base_level=1.0";
