@@ -3,7 +3,7 @@
 at an output, the load of the discs over each base node's column beyond the reference layer (the
 layer's weight per length at output 0, as the run measures it), and the deflection that load gives
 an infinite elastic plate (the sum of Hetenyi's line-load solutions) or Airy's balance (the load
-averaged over 2 h0); printed beside the base's nodes as the run placed them (the snapshot's
+averaged over the nodes within h0 of each, as the run does); printed beside the base's nodes as the run placed them (the snapshot's
 walls), with the largest difference. The run's base lags its load by up to isostasy.every steps.
 
     scripts/isostasy_check.py RUN [OUTPUT]        (OUTPUT: default the last)
@@ -58,7 +58,7 @@ def main(run, output=None):
         half = int(0.5 * 2 * h0 / dx)
         mean = np.array([load[max(0, j - half):j + half + 1].mean() for j in range(load.size)])
         expected = -mean / k
-        label = "Airy over 2 h0"
+        label = "Airy over %d nodes" % (2 * half + 1)
     diff = placed - expected
     deepest = np.argmin(expected)
     print(f"{run}: S = {last.attrs['S']:.2f}, {label}; deepest {-expected[deepest] / h0:.4f} h0 expected, "

@@ -13,7 +13,8 @@ struct IsostasySpec {
   double rigidity = 0;           // D [d^4 rho g], 0 under Airy
   std::int32_t every = 500;      // steps between solves; the base moves to each over the next `every`
   double segment_length = 5;     // [d]
-  // Airy: each node balances the load averaged over this width [d] around it (2 h0): a layer of
+  // Airy: each node balances the load averaged over the nodes within half this width [d] of it
+  // (2 h0: five nodes at the default segments, docs/isostasy.md): a layer of
   // grains is not compensated grain by grain, and a base as rough as its columns' loads would
   // shear the kinematic slab riding on it.
   double airy_width = 20;
