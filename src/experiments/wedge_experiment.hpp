@@ -131,6 +131,9 @@ class WedgeExperiment final : public Experiment {
   double slab_reserve() const { return 2.0 * spec_.h0; }
 
  public:
+  // Steps between window and stray checks: the kinematic slab's riding speeds hold until the
+  // next (isostasy.every is a multiple of it).
+  static constexpr std::uint64_t kHousekeepingEvery = 100;
   static double tile_margin_for(double h0) { return 0.5 * h0 + 2.0; }
   // The checkpointed scalars and arrays, each once with its key, for save() and load()
   // (io/archive_fields.hpp); the tile, the displacements and the history save themselves.

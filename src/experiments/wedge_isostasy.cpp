@@ -9,7 +9,6 @@
 namespace orogen {
 namespace {
 
-constexpr std::uint64_t kRideSteps = 100;  // steps between window updates (wedge_experiment.cpp)
 constexpr double kDeepestBase = 10;        // [h0]: a base deeper than this stops the run (exit 3)
 
 bool names_base(const std::string& wall, std::string_view base) {
@@ -73,8 +72,8 @@ BaseHeight WedgeExperiment::on_base(const World& w) const {
 
 double WedgeExperiment::riding_speed(const World& w, double x, double vx) const {
   if (!base_.active()) return 0.0;
-  const double dt = static_cast<double>(kRideSteps) * w.dt;
-  return (base_.height(x + vx * dt, w.step + kRideSteps) - base_.height(x, w.step)) / dt;
+  const double dt = static_cast<double>(kHousekeepingEvery) * w.dt;
+  return (base_.height(x + vx * dt, w.step + kHousekeepingEvery) - base_.height(x, w.step)) / dt;
 }
 
 WallContactStats WedgeExperiment::base_stats(const World& w, const std::vector<std::size_t>& walls) const {
