@@ -32,4 +32,8 @@ inline std::string slurp(const std::filesystem::path& p) {
   return ss.str();
 }
 
+inline void spit(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
 }  // namespace orogen::testing

@@ -17,34 +17,17 @@
 #include <string>
 
 #include "io/hdf5_file.hpp"
+#include "cli_runner.hpp"
 #include "temp_dir_fixture.hpp"
 
 namespace fs = std::filesystem;
+using orogen::testing::CliResult;
+using orogen::testing::run_orogen;
 using orogen::testing::slurp;
 
 namespace {
 
 class AnalyzeCli : public orogen::testing::TempDirTest {};
-
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-Result orogen_cli(const std::string& args, const fs::path& scratch) {
-  const fs::path out = scratch / "stdout", err = scratch / "stderr";
-  std::string cmd = "'";
-  cmd += OROGEN_BINARY;
-  cmd += "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
 
 // A wedge run of a few hundred discs that erodes from the start (about a second).
 const std::string kSmall =
@@ -112,19 +95,19 @@ void expect_same_analysis(const fs::path& a, const fs::path& b) {
 
 TEST_F(AnalyzeCli, GrowingRunAnalysedTwiceEqualsOnceOnTheFinishedRun) {
   const fs::path run = dir_ / "run", copy = dir_ / "copy";
-  EXPECT_NE(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --abort-after-outputs 3", dir_).status, 0);
-  const Result first = orogen_cli("analyze '" + run.string() + "'", dir_);
+  EXPECT_NE(run_orogen("run --out '" + run.string() + "'" + kSmall + " --abort-after-outputs 3", dir_).status, 0);
+  const CliResult first = run_orogen("analyze '" + run.string() + "'", dir_);
   ASSERT_EQ(first.status, 0) << first.err;
   EXPECT_NE(first.out.find("(3 new)"), std::string::npos) << first.out;
-  ASSERT_EQ(orogen_cli("run --resume '" + run.string() + "'", dir_).status, 0);
-  const Result second = orogen_cli("analyze '" + run.string() + "'", dir_);
+  ASSERT_EQ(run_orogen("run --resume '" + run.string() + "'", dir_).status, 0);
+  const CliResult second = run_orogen("analyze '" + run.string() + "'", dir_);
   ASSERT_EQ(second.status, 0) << second.err;
   EXPECT_NE(second.out.find("7 outputs (4 new)"), std::string::npos) << second.out;
 
   fs::copy(run, copy, fs::copy_options::recursive);
   for (const char* f : kAnalysisFiles) fs::remove(copy / f);
   fs::remove(copy / "analysis_state.bin");
-  const Result once = orogen_cli("analyze '" + copy.string() + "'", dir_);
+  const CliResult once = run_orogen("analyze '" + copy.string() + "'", dir_);
   ASSERT_EQ(once.status, 0) << once.err;
   EXPECT_NE(once.out.find("(7 new)"), std::string::npos) << once.out;
   expect_same_analysis(run, copy);
@@ -136,7 +119,7 @@ TEST_F(AnalyzeCli, GrowingRunAnalysedTwiceEqualsOnceOnTheFinishedRun) {
 
   // Nothing new: a third call adds nothing and changes nothing.
   const auto before = contents(run);
-  const Result third = orogen_cli("analyze '" + run.string() + "'", dir_);
+  const CliResult third = run_orogen("analyze '" + run.string() + "'", dir_);
   ASSERT_EQ(third.status, 0) << third.err;
   EXPECT_NE(third.out.find("(0 new)"), std::string::npos) << third.out;
   for (const char* f : kAnalysisFiles) EXPECT_TRUE(before.at(f) == slurp(run / f)) << f << " changed";
@@ -146,7 +129,7 @@ TEST_F(AnalyzeCli, OutputsNotYetCoveredByRemovalsWaitForTheNextCall) {
   // A running run writes removals.csv just after each snapshot: an index one output ahead of
   // removals.csv must not lose that output's erosion.
   const fs::path run = dir_ / "run", copy = dir_ / "copy";
-  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "'" + kSmall, dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + run.string() + "'" + kSmall, dir_).status, 0);
   fs::copy(run, copy, fs::copy_options::recursive);
   const std::string removals = slurp(run / "removals.csv");
   const auto at = removals.find("# through_step: ");
@@ -155,13 +138,13 @@ TEST_F(AnalyzeCli, OutputsNotYetCoveredByRemovalsWaitForTheNextCall) {
   // Covers output 0 only (step 0).
   const std::string early = removals.substr(0, at + 16) + "1" + removals.substr(end);
   std::ofstream(run / "removals.csv", std::ios::trunc) << early;
-  const Result first = orogen_cli("analyze '" + run.string() + "'", dir_);
+  const CliResult first = run_orogen("analyze '" + run.string() + "'", dir_);
   ASSERT_EQ(first.status, 0) << first.err;
   EXPECT_NE(first.out.find("1 outputs (1 new)"), std::string::npos) << first.out;
   std::ofstream(run / "removals.csv", std::ios::trunc) << removals;
-  const Result second = orogen_cli("analyze '" + run.string() + "'", dir_);
+  const CliResult second = run_orogen("analyze '" + run.string() + "'", dir_);
   EXPECT_NE(second.out.find("7 outputs (6 new)"), std::string::npos) << second.out;
-  ASSERT_EQ(orogen_cli("analyze '" + copy.string() + "'", dir_).status, 0);
+  ASSERT_EQ(run_orogen("analyze '" + copy.string() + "'", dir_).status, 0);
   expect_same_analysis(run, copy);
 }
 
@@ -169,17 +152,17 @@ TEST_F(AnalyzeCli, ACallKilledBeforeSavingItsStateIsMadeGoodByTheNext) {
   // A call killed after it extended the files but before it saved analysis_state.bin leaves
   // rows beyond the state's count: the next call cuts them off and writes them again.
   const fs::path run = dir_ / "run", copy = dir_ / "copy";
-  EXPECT_NE(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --abort-after-outputs 3", dir_).status, 0);
-  ASSERT_EQ(orogen_cli("analyze '" + run.string() + "'", dir_).status, 0);
+  EXPECT_NE(run_orogen("run --out '" + run.string() + "'" + kSmall + " --abort-after-outputs 3", dir_).status, 0);
+  ASSERT_EQ(run_orogen("analyze '" + run.string() + "'", dir_).status, 0);
   const std::string state3 = slurp(run / "analysis_state.bin");
-  ASSERT_EQ(orogen_cli("run --resume '" + run.string() + "'", dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --resume '" + run.string() + "'", dir_).status, 0);
   fs::copy(run, copy, fs::copy_options::recursive);
-  ASSERT_EQ(orogen_cli("analyze '" + run.string() + "'", dir_).status, 0);
+  ASSERT_EQ(run_orogen("analyze '" + run.string() + "'", dir_).status, 0);
   std::ofstream(run / "analysis_state.bin", std::ios::binary | std::ios::trunc) << state3;  // as if killed
-  const Result again = orogen_cli("analyze '" + run.string() + "'", dir_);
+  const CliResult again = run_orogen("analyze '" + run.string() + "'", dir_);
   ASSERT_EQ(again.status, 0) << again.err;
   EXPECT_NE(again.out.find("7 outputs (4 new)"), std::string::npos) << again.out;
-  ASSERT_EQ(orogen_cli("analyze '" + copy.string() + "'", dir_).status, 0);
+  ASSERT_EQ(run_orogen("analyze '" + copy.string() + "'", dir_).status, 0);
   expect_same_analysis(run, copy);
 
   // A call killed while analysis.h5 was open for writing leaves it marked incomplete (HDF5's
@@ -189,7 +172,7 @@ TEST_F(AnalyzeCli, ACallKilledBeforeSavingItsStateIsMadeGoodByTheNext) {
     h5::File f = h5::File::open(run / "analysis.h5", h5::File::Mode::ReadWrite);
     h5::set_attr_int64(f.id(), "incomplete", 1);
   }
-  const Result marked = orogen_cli("analyze '" + run.string() + "'", dir_);
+  const CliResult marked = run_orogen("analyze '" + run.string() + "'", dir_);
   ASSERT_EQ(marked.status, 0) << marked.err;
   EXPECT_NE(marked.out.find("7 outputs (7 new)"), std::string::npos) << marked.out;
   EXPECT_NE(marked.err.find("was being written when its call stopped"), std::string::npos) << marked.err;
@@ -197,7 +180,7 @@ TEST_F(AnalyzeCli, ACallKilledBeforeSavingItsStateIsMadeGoodByTheNext) {
 
   // Files that do not continue the state (here: analysis.h5 gone) make the call start over.
   fs::remove(run / "analysis.h5");
-  const Result over = orogen_cli("analyze '" + run.string() + "'", dir_);
+  const CliResult over = run_orogen("analyze '" + run.string() + "'", dir_);
   ASSERT_EQ(over.status, 0) << over.err;
   EXPECT_NE(over.out.find("7 outputs (7 new)"), std::string::npos) << over.out;
   expect_same_analysis(run, copy);
@@ -207,15 +190,15 @@ TEST_F(AnalyzeCli, ADamagedNewOutputLeavesAContinuedAnalysisAsItWas) {
   // The outputs before the damaged one are appended, then cut off again: the state and the
   // tables keep their bytes, analysis.h5 its values.
   const fs::path run = dir_ / "run";
-  EXPECT_NE(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --abort-after-outputs 3", dir_).status, 0);
-  ASSERT_EQ(orogen_cli("analyze '" + run.string() + "'", dir_).status, 0);
+  EXPECT_NE(run_orogen("run --out '" + run.string() + "'" + kSmall + " --abort-after-outputs 3", dir_).status, 0);
+  ASSERT_EQ(run_orogen("analyze '" + run.string() + "'", dir_).status, 0);
   const auto values = h5_values(run / "analysis.h5");
   const std::string state = slurp(run / "analysis_state.bin");
   std::map<std::string, std::string> tables;
   for (const char* f : kTables) tables[f] = slurp(run / f);
-  ASSERT_EQ(orogen_cli("run --resume '" + run.string() + "'", dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --resume '" + run.string() + "'", dir_).status, 0);
   fs::resize_file(run / "snapshots" / "output_000005.h5", 100);
-  const Result r = orogen_cli("analyze '" + run.string() + "'", dir_);
+  const CliResult r = run_orogen("analyze '" + run.string() + "'", dir_);
   EXPECT_EQ(r.status, 1) << r.err;  // a damaged file: I/O (docs/exit-codes.md)
   EXPECT_NE(r.err.find("output 5 cannot be read"), std::string::npos) << r.err;
   EXPECT_TRUE(h5_values(run / "analysis.h5") == values);
@@ -227,11 +210,11 @@ TEST_F(AnalyzeCli, ADamagedNewOutputLeavesAContinuedAnalysisAsItWas) {
 
 TEST_F(AnalyzeCli, ReadsARunningRunWithoutTakingItsLock) {
   const fs::path run = dir_ / "run";
-  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --set wedge.outputs=2", dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + run.string() + "'" + kSmall + " --set wedge.outputs=2", dir_).status, 0);
   const int fd = ::open((run / "run.lock").c_str(), O_RDWR);
   ASSERT_GE(fd, 0);
   ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // as the running process holds it
-  const Result r = orogen_cli("analyze '" + run.string() + "'", dir_);
+  const CliResult r = run_orogen("analyze '" + run.string() + "'", dir_);
   ::close(fd);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(run / "analysis.h5"));
@@ -239,11 +222,11 @@ TEST_F(AnalyzeCli, ReadsARunningRunWithoutTakingItsLock) {
 
 TEST_F(AnalyzeCli, BadInputIsRefusedAndChangesNothing) {
   const fs::path run = dir_ / "run";
-  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "'" + kSmall + " --set wedge.outputs=2", dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + run.string() + "'" + kSmall + " --set wedge.outputs=2", dir_).status, 0);
   const auto expect_refused = [&](const fs::path& dir, const std::string& options, const std::string& named,
                                   int status = 2) {
     const auto before = fs::exists(dir) ? contents(dir) : std::map<std::string, std::string>{};
-    const Result r = orogen_cli("analyze '" + dir.string() + "'" + options, dir_);
+    const CliResult r = run_orogen("analyze '" + dir.string() + "'" + options, dir_);
     EXPECT_EQ(r.status, status) << options << ": " << r.err;
     EXPECT_NE(r.err.find(named), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
@@ -284,14 +267,14 @@ TEST_F(AnalyzeCli, InRunAnalysisEqualsAnalyzeAfterwards) {
   const std::string keys = " --set analysis.in_run=true --set analysis.every=2 --set analysis.closure_depths=0.2,0.6"
                            " --set analysis.flux_window=2";
   // Killed after 3 outputs and resumed: the in-run analysis continues across the resume.
-  EXPECT_NE(orogen_cli("run --out '" + run.string() + "'" + kSmall + keys + " --abort-after-outputs 3", dir_).status, 0);
-  const Result resumed = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  EXPECT_NE(run_orogen("run --out '" + run.string() + "'" + kSmall + keys + " --abort-after-outputs 3", dir_).status, 0);
+  const CliResult resumed = run_orogen("run --resume '" + run.string() + "'", dir_);
   ASSERT_EQ(resumed.status, 0) << resumed.err;
   ASSERT_TRUE(fs::exists(run / "analysis.h5"));
   fs::copy(run, copy, fs::copy_options::recursive);
   for (const char* f : kAnalysisFiles) fs::remove(copy / f);
   fs::remove(copy / "analysis_state.bin");
-  const Result after = orogen_cli("analyze '" + copy.string() + "'", dir_);  // the run's [analysis] keys
+  const CliResult after = run_orogen("analyze '" + copy.string() + "'", dir_);  // the run's [analysis] keys
   ASSERT_EQ(after.status, 0) << after.err;
   EXPECT_NE(after.out.find("7 outputs (7 new)"), std::string::npos) << after.out;
   expect_same_analysis(run, copy);
@@ -300,13 +283,13 @@ TEST_F(AnalyzeCli, InRunAnalysisEqualsAnalyzeAfterwards) {
 
 TEST_F(AnalyzeCli, BadAnalysisKeysRefuseTheRun) {
   const fs::path run = dir_ / "run";
-  const Result r = orogen_cli("run --out '" + run.string() + "'" + kSmall +
+  const CliResult r = run_orogen("run --out '" + run.string() + "'" + kSmall +
                                   " --set analysis.in_run=true --set analysis.closure_depths=0.6,0.2",
                               dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("analysis.closure_depths = 0.6,0.2: not in strictly ascending order"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(run / "config.toml"));  // refused before the folder was claimed
-  const Result packing = orogen_cli("run --out '" + (dir_ / "p").string() +
+  const CliResult packing = run_orogen("run --out '" + (dir_ / "p").string() +
                                         "' --set run.experiment=packing --set analysis.in_run=true",
                                     dir_);
   EXPECT_EQ(packing.status, 2);

@@ -2,6 +2,7 @@
 // kill, refusal of bad input (exit 2, nothing written) and the printed default config.
 #include <gtest/gtest.h>
 
+#include "cli_runner.hpp"
 #include "temp_dir_fixture.hpp"
 #include "tmpfs_mount.hpp"
 #include "util/parallel.hpp"
@@ -48,41 +49,10 @@ class Cli : public orogen::testing::TempDirTest {
   }
 };
 
+using orogen::testing::decode_exit_status;
+using orogen::testing::run_orogen;
 using orogen::testing::slurp;
-
-void spit(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-}
-
-struct Result {
-  int status = -1;  // exit status, or 128 + signal
-  std::string out, err;
-};
-
-int decode_status(int raw) {
-  if (WIFEXITED(raw)) return WEXITSTATUS(raw);
-  if (WIFSIGNALED(raw)) return 128 + WTERMSIG(raw);
-  return -1;
-}
-
-// Runs `orogen ARGS` through the shell (ARGS is shell syntax), capturing stdout and stderr
-// in files under `scratch`.
-// `env` is prefixed to the command line (e.g. "OROGEN_MIN_PARALLEL_ITEMS=16 ").
-Result orogen_cli(const std::string& args, const fs::path& scratch, const std::string& env = "") {
-  static int serial = 0;
-  const fs::path out = scratch / ("stdout_" + std::to_string(serial));
-  const fs::path err = scratch / ("stderr_" + std::to_string(serial++));
-  const std::string cmd =
-      env + "'" + std::string(OROGEN_BINARY) + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  Result r;
-  r.status = decode_status(std::system(cmd.c_str()));
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
+using orogen::testing::spit;
 
 // Small settling runs (tenths of a second). Thread counts only matter above
 // kMinParallelItems (16384) discs, so the determinism runs use ~17000-18000 discs and
@@ -203,9 +173,9 @@ TEST_F(Cli, SameSeedSameOutputsForOneAndTwoThreads) {
   for (const std::string packing : {"hexagonal", "random_discs", "random_clusters"}) {
     SCOPED_TRACE(packing);
     const fs::path one = dir_ / (packing + "_1"), two = dir_ / (packing + "_2");
-    const auto r1 = orogen_cli("run --out '" + one.string() + "' --threads 1 " + big_short(packing), dir_);
+    const auto r1 = run_orogen("run --out '" + one.string() + "' --threads 1 " + big_short(packing), dir_);
     ASSERT_EQ(r1.status, 0) << r1.err;
-    const auto r2 = orogen_cli("run --out '" + two.string() + "' --threads 2 " + big_short(packing), dir_);
+    const auto r2 = run_orogen("run --out '" + two.string() + "' --threads 2 " + big_short(packing), dir_);
     ASSERT_EQ(r2.status, 0) << r2.err;
     EXPECT_NE(slurp(one / "run.log").find("with 1 thread(s)"), std::string::npos);
     EXPECT_NE(slurp(two / "run.log").find("with 2 thread(s)"), std::string::npos);
@@ -245,9 +215,9 @@ TEST_F(Cli, EveryExperimentSameOutputsForOneAndTwoThreads) {
     SCOPED_TRACE(name);
     const fs::path one = dir_ / (name + "_1"), two = dir_ / (name + "_2");
     const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
-    const auto r1 = orogen_cli("run --out '" + one.string() + "' --threads 1 " + args + quiet, dir_, env);
+    const auto r1 = run_orogen("run --out '" + one.string() + "' --threads 1 " + args + quiet, dir_, env);
     ASSERT_EQ(r1.status, 0) << r1.err;
-    const auto r2 = orogen_cli("run --out '" + two.string() + "' --threads 2 " + args + quiet, dir_, env);
+    const auto r2 = run_orogen("run --out '" + two.string() + "' --threads 2 " + args + quiet, dir_, env);
     ASSERT_EQ(r2.status, 0) << r2.err;
     EXPECT_GE(outputs_in(one), 3);
     expect_same_snapshots(one / "snapshots.h5", two / "snapshots.h5");
@@ -259,7 +229,7 @@ TEST_F(Cli, EveryExperimentSameOutputsForOneAndTwoThreads) {
       EXPECT_NE(log.find(", 1 thread(s) for"), std::string::npos) << log;
     }
   }
-  const auto bad = orogen_cli("run --out '" + (dir_ / "bad").string() + "' " + kTiny, dir_,
+  const auto bad = run_orogen("run --out '" + (dir_ / "bad").string() + "' " + kTiny, dir_,
                               "OROGEN_MIN_PARALLEL_ITEMS=lots ");
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("OROGEN_MIN_PARALLEL_ITEMS = 'lots'"), std::string::npos) << bad.err;
@@ -268,20 +238,20 @@ TEST_F(Cli, EveryExperimentSameOutputsForOneAndTwoThreads) {
 
 TEST_F(Cli, ResumeAfterKillIsBitwiseIdentical) {
   const fs::path a = dir_ / "a", b = dir_ / "b";
-  const auto ra = orogen_cli("run --out '" + a.string() + "' " + kTiny, dir_);
+  const auto ra = run_orogen("run --out '" + a.string() + "' " + kTiny, dir_);
   ASSERT_EQ(ra.status, 0) << ra.err;
   ASSERT_GE(outputs_in(a), 5);
 
   // Dies right after its third output; the last checkpoint was taken after the second, so
   // the third (snapshot group, vtp file, series row) must be dropped and written again.
-  const auto rb = orogen_cli("run --out '" + b.string() + "' --abort-after-outputs 3 " + kTiny, dir_);
+  const auto rb = run_orogen("run --out '" + b.string() + "' --abort-after-outputs 3 " + kTiny, dir_);
   ASSERT_EQ(rb.status, 137) << rb.err;
   EXPECT_FALSE(fs::exists(b / "packing.h5"));
   EXPECT_EQ(outputs_in(b), 3);
   EXPECT_TRUE(fs::exists(b / "vtp" / "output_000002.vtp"));
   EXPECT_FALSE(fs::exists(b / "vtp" / "output_000003.vtp"));
 
-  const auto rr = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  const auto rr = run_orogen("run --resume '" + b.string() + "'", dir_);
   ASSERT_EQ(rr.status, 0) << rr.err;
   EXPECT_NE(slurp(b / "run.log").find("resumed at step"), std::string::npos);
   EXPECT_EQ(outputs_in(b), outputs_in(a));
@@ -289,7 +259,7 @@ TEST_F(Cli, ResumeAfterKillIsBitwiseIdentical) {
   expect_same_bytes(a / "config.toml", b / "config.toml");
 
   // A finished run cannot be resumed again.
-  const auto again = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  const auto again = run_orogen("run --resume '" + b.string() + "'", dir_);
   EXPECT_EQ(again.status, 2);
   EXPECT_NE(again.err.find("already finished"), std::string::npos) << again.err;
 }
@@ -319,12 +289,12 @@ int signal_when_written(const std::string& args_text, const fs::path& marker, in
   int raw = 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   while (!fs::exists(marker) && std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &raw, WNOHANG) == pid) return decode_status(raw);
+    if (::waitpid(pid, &raw, WNOHANG) == pid) return decode_exit_status(raw);
     std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
   ::kill(pid, sig);
   ::waitpid(pid, &raw, 0);
-  return decode_status(raw);
+  return decode_exit_status(raw);
 }
 
 // A real SIGKILL at an arbitrary point while output 4 (after the checkpoint taken at 4
@@ -332,7 +302,7 @@ int signal_when_written(const std::string& args_text, const fs::path& marker, in
 TEST_F(Cli, ResumeAfterSigkillIsBitwiseIdentical) {
   const std::string slow = kTiny + " --set settle.relax_time=20";  // ~5000 steps left after the kill
   const fs::path a = dir_ / "a", b = dir_ / "b";
-  const auto ra = orogen_cli("run --out '" + a.string() + "' " + slow, dir_);
+  const auto ra = run_orogen("run --out '" + a.string() + "' " + slow, dir_);
   ASSERT_EQ(ra.status, 0) << ra.err;
 
   const int status = signal_when_written(slow + " --out '" + b.string() + "'", b / "vtp" / "output_000004.vtp",
@@ -342,7 +312,7 @@ TEST_F(Cli, ResumeAfterSigkillIsBitwiseIdentical) {
   ASSERT_TRUE(fs::exists(b / "checkpoint.bin"));
   EXPECT_FALSE(fs::exists(b / "packing.h5"));
 
-  const auto rr = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  const auto rr = run_orogen("run --resume '" + b.string() + "'", dir_);
   ASSERT_EQ(rr.status, 0) << rr.err;
   expect_same_run(a, b);
 }
@@ -350,8 +320,8 @@ TEST_F(Cli, ResumeAfterSigkillIsBitwiseIdentical) {
 TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
   // A finished run and one killed before its first checkpoint, for the cases that need one.
   const fs::path done = dir_ / "done", early = dir_ / "early";
-  ASSERT_EQ(orogen_cli("run --out '" + done.string() + "' " + kTiny, dir_).status, 0);
-  ASSERT_EQ(orogen_cli("run --out '" + early.string() + "' --abort-after-outputs 1 " + kTiny, dir_).status, 137);
+  ASSERT_EQ(run_orogen("run --out '" + done.string() + "' " + kTiny, dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + early.string() + "' --abort-after-outputs 1 " + kTiny, dir_).status, 137);
   ASSERT_FALSE(fs::exists(early / "checkpoint.bin"));
   auto fingerprint = [](const fs::path& run) {
     std::map<std::string, std::string> files;  // run.log may grow: refused resumes are logged
@@ -413,7 +383,7 @@ TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE("orogen run " + c.args);
-    const auto r = orogen_cli("run " + c.args, dir_);
+    const auto r = run_orogen("run " + c.args, dir_);
     EXPECT_EQ(r.status, 2) << r.err;
     for (const auto& e : c.expect) EXPECT_NE(r.err.find(e), std::string::npos) << "expected '" << e << "' in: " << r.err;
     if (c.fresh) {
@@ -424,7 +394,7 @@ TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
 
   // An empty folder given to --resume stays empty.
   fs::create_directories(dir_ / "empty");
-  const auto r = orogen_cli("run --resume " + d + "empty'", dir_);
+  const auto r = run_orogen("run --resume " + d + "empty'", dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("no run there"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_empty(dir_ / "empty"));
@@ -436,7 +406,7 @@ TEST_F(Cli, BadInputsExitWith2AndWriteNothing) {
 }
 
 TEST_F(Cli, DefaultRunNeedsNoConfig) {
-  const auto printed = orogen_cli("config", dir_);
+  const auto printed = run_orogen("config", dir_);
   ASSERT_EQ(printed.status, 0) << printed.err;
   EXPECT_NE(printed.out.find("[run]"), std::string::npos);
   EXPECT_NE(printed.out.find("experiment = \"wedge\""), std::string::npos);
@@ -444,13 +414,13 @@ TEST_F(Cli, DefaultRunNeedsNoConfig) {
 
   // The printed default reads back and runs ...
   const fs::path from_file = dir_ / "from_file", built_in = dir_ / "built_in";
-  const auto r1 = orogen_cli("run '" + (dir_ / "default.toml").string() + "' --out '" + from_file.string() + "' " + kTiny,
+  const auto r1 = run_orogen("run '" + (dir_ / "default.toml").string() + "' --out '" + from_file.string() + "' " + kTiny,
                              dir_);
   ASSERT_EQ(r1.status, 0) << r1.err;
   EXPECT_GE(outputs_in(from_file), 2);
   EXPECT_TRUE(fs::exists(from_file / "packing.h5"));
   // ... and is the built-in default: no CONFIG, same overrides, same resolved config and results.
-  const auto r2 = orogen_cli("run --out '" + built_in.string() + "' " + kTiny, dir_);
+  const auto r2 = run_orogen("run --out '" + built_in.string() + "' " + kTiny, dir_);
   ASSERT_EQ(r2.status, 0) << r2.err;
   expect_same_bytes(from_file / "config.toml", built_in / "config.toml");
   expect_same_run(from_file, built_in);
@@ -458,7 +428,7 @@ TEST_F(Cli, DefaultRunNeedsNoConfig) {
 
   // The config.toml a run writes is itself a valid CONFIG that resolves to the same text.
   const fs::path again = dir_ / "again";
-  const auto r3 = orogen_cli("run '" + (built_in / "config.toml").string() + "' --out '" + again.string() +
+  const auto r3 = run_orogen("run '" + (built_in / "config.toml").string() + "' --out '" + again.string() +
                                  "' --threads 1",
                              dir_);
   ASSERT_EQ(r3.status, 0) << r3.err;
@@ -470,7 +440,7 @@ TEST_F(Cli, DefaultRunNeedsNoConfig) {
 
 TEST_F(Cli, UnstableRunStopsWithExit3AndNamesTheCause) {
   // Contacts far too soft for the weight: the discs sink into each other.
-  const auto r = orogen_cli("run --out '" + (dir_ / "soft").string() +
+  const auto r = run_orogen("run --out '" + (dir_ / "soft").string() +
                                 "' --set run.experiment=packing --set layer.length=20 --set layer.thickness=4"
                                 " --set contact.kn=3 --set output.progress=never",
                             dir_);
@@ -482,31 +452,31 @@ TEST_F(Cli, UnstableRunStopsWithExit3AndNamesTheCause) {
 
 TEST_F(Cli, WedgeStartsFromAPackingFileAndRefusesAWrongOne) {
   const std::string quiet = " --set output.progress=never --set output.vtp=false --threads 1";
-  const auto packing = orogen_cli("run --out '" + (dir_ / "layer").string() +
+  const auto packing = run_orogen("run --out '" + (dir_ / "layer").string() +
                                       "' --set run.experiment=packing --set layer.length=40"
                                       " --set layer.thickness=6" + quiet,
                                   dir_);
   ASSERT_EQ(packing.status, 0) << packing.err;
   const std::string file = (dir_ / "layer" / "packing.h5").string();
-  const auto wedge = orogen_cli("run --out '" + (dir_ / "wedge").string() + "' --set layer.thickness=6"
+  const auto wedge = run_orogen("run --out '" + (dir_ / "wedge").string() + "' --set layer.thickness=6"
                                     " --set wedge.packing_file='" + file + "' --set wedge.s_end=0.02"
                                     " --set wedge.outputs=2" + quiet,
                                 dir_);
   ASSERT_EQ(wedge.status, 0) << wedge.err;
   EXPECT_EQ(outputs_in(dir_ / "wedge"), 3);
   // A packing of another thickness, and a file that is no packing: exit 2, nothing written.
-  const auto thick = orogen_cli("run --out '" + (dir_ / "bad1").string() + "' --set layer.thickness=8"
+  const auto thick = run_orogen("run --out '" + (dir_ / "bad1").string() + "' --set layer.thickness=8"
                                     " --set wedge.packing_file='" + file + "'" + quiet,
                                 dir_);
   EXPECT_EQ(thick.status, 2);
   EXPECT_NE(thick.err.find("set layer.thickness = 6"), std::string::npos) << thick.err;
-  const auto junk = orogen_cli("run --out '" + (dir_ / "bad2").string() + "' --set wedge.packing_file='" +
+  const auto junk = run_orogen("run --out '" + (dir_ / "bad2").string() + "' --set wedge.packing_file='" +
                                    (dir_ / "layer" / "config.toml").string() + "'" + quiet,
                                dir_);
   EXPECT_EQ(junk.status, 2);
   EXPECT_NE(junk.err.find("wedge.packing_file"), std::string::npos) << junk.err;
   // An HDF5 file of another kind (a run's snapshots): said once, with what the file holds.
-  const auto other = orogen_cli("run --out '" + (dir_ / "bad3").string() + "' --set wedge.packing_file='" +
+  const auto other = run_orogen("run --out '" + (dir_ / "bad3").string() + "' --set wedge.packing_file='" +
                                     (dir_ / "wedge" / "snapshots.h5").string() + "'" + quiet,
                                 dir_);
   EXPECT_EQ(other.status, 2);
@@ -526,9 +496,9 @@ TEST_F(Cli, WedgeResumeAfterKillIsBitwiseIdentical) {
       " --set wedge.s_end=0.3 --set wedge.outputs=6 --set wedge.erosion_height=0.9 --set output.checkpoint_every=2"
       " --set output.progress=never --set output.vtp=false --threads 1";
   const fs::path a = dir_ / "whole", b = dir_ / "killed";
-  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "'" + small, dir_).status, 0);
-  EXPECT_NE(orogen_cli("run --out '" + b.string() + "'" + small + " --abort-after-outputs 3", dir_).status, 0);
-  ASSERT_EQ(orogen_cli("run --resume '" + b.string() + "'", dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + a.string() + "'" + small, dir_).status, 0);
+  EXPECT_NE(run_orogen("run --out '" + b.string() + "'" + small + " --abort-after-outputs 3", dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --resume '" + b.string() + "'", dir_).status, 0);
   EXPECT_NE(slurp(a / "removals.csv").find("eroded"), std::string::npos);
   expect_same_bytes(a / "series.csv", b / "series.csv");
   expect_same_bytes(a / "removals.csv", b / "removals.csv");
@@ -544,9 +514,9 @@ TEST_F(Cli, ConstantVelocityWedgeResumeIsBitwiseIdentical) {
       " --set wedge.basal=constant_velocity --set wedge.s_end=0.3 --set wedge.outputs=6 --set output.checkpoint_every=2"
       " --set output.progress=never --set output.vtp=false --threads 2";
   const fs::path a = dir_ / "whole", b = dir_ / "killed";
-  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "'" + small, dir_).status, 0);
-  EXPECT_NE(orogen_cli("run --out '" + b.string() + "'" + small + " --abort-after-outputs 3", dir_).status, 0);
-  ASSERT_EQ(orogen_cli("run --resume '" + b.string() + "'", dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + a.string() + "'" + small, dir_).status, 0);
+  EXPECT_NE(run_orogen("run --out '" + b.string() + "'" + small + " --abort-after-outputs 3", dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --resume '" + b.string() + "'", dir_).status, 0);
   expect_same_bytes(a / "series.csv", b / "series.csv");
   expect_same_bytes(a / "checkpoint.bin", b / "checkpoint.bin");
   expect_same_snapshots(a / "snapshots.h5", b / "snapshots.h5");
@@ -571,13 +541,13 @@ std::vector<std::string> temporary_files_in(const fs::path& dir) {
 
 TEST_F(Cli, ResumeRemovesTheTemporaryFilesOfAKilledWrite) {
   const fs::path a = dir_ / "a", b = dir_ / "b";
-  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "' " + kTiny, dir_).status, 0);
-  ASSERT_EQ(orogen_cli("run --out '" + b.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
+  ASSERT_EQ(run_orogen("run --out '" + a.string() + "' " + kTiny, dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + b.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
   // What a kill in the middle of each kind of write leaves.
   for (const fs::path& stray : {b / "series.csv.tmp-4242", b / "checkpoint.bin.tmp-4242",
                                 b / "snapshots" / "output_000003.h5.tmp-4242", b / "vtp" / "output_000003.vtp.tmp-7"})
     spit(stray, "half written");
-  const auto r = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  const auto r = run_orogen("run --resume '" + b.string() + "'", dir_);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(temporary_files_in(b), std::vector<std::string>{});
   EXPECT_NE(slurp(b / "run.log").find("removed 4 temporary file(s)"), std::string::npos);
@@ -589,7 +559,7 @@ TEST_F(Cli, AFolderWithRunFilesButNoConfigIsRefusedAndKept) {
   fs::create_directories(run);
   spit(run / "snapshots.h5", "precious");
   spit(run / "series.csv", "precious too");
-  const auto r = orogen_cli("run --out '" + run.string() + "' " + kTiny, dir_);
+  const auto r = run_orogen("run --out '" + run.string() + "' " + kTiny, dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("holds files of a run (snapshots.h5, series.csv) but no config.toml"), std::string::npos)
       << r.err;
@@ -603,7 +573,7 @@ TEST_F(Cli, AFolderHeldByAnotherRunIsRefused) {
   const int fd = ::open((run / "run.lock").c_str(), O_RDWR | O_CREAT, 0644);
   ASSERT_GE(fd, 0);
   ASSERT_EQ(::flock(fd, LOCK_EX), 0);  // as a running orogen holds it
-  const auto r = orogen_cli("run --out '" + run.string() + "' " + kTiny, dir_);
+  const auto r = run_orogen("run --out '" + run.string() + "' " + kTiny, dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("in use by another orogen process"), std::string::npos) << r.err;
   EXPECT_EQ(names_in(run), std::vector<std::string>{"run.lock"});
@@ -632,11 +602,11 @@ TEST_F(Cli, TwoRunsStartedIntoOneNewFolderCannotBothRun) {
 
 TEST_F(Cli, ResumeRefusesFilesOfAnotherRunNamingWhatDiffers) {
   const fs::path a = dir_ / "a", b = dir_ / "b";
-  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
-  ASSERT_EQ(orogen_cli("run --out '" + b.string() + "' --abort-after-outputs 3 --set run.seed=2 " + kTiny, dir_).status,
+  ASSERT_EQ(run_orogen("run --out '" + a.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
+  ASSERT_EQ(run_orogen("run --out '" + b.string() + "' --abort-after-outputs 3 --set run.seed=2 " + kTiny, dir_).status,
             137);
   const auto before = names_in(a);
-  auto resume_a = [&] { return orogen_cli("run --resume '" + a.string() + "'", dir_); };
+  auto resume_a = [&] { return run_orogen("run --resume '" + a.string() + "'", dir_); };
 
   // A checkpoint copied from another seed's run.
   fs::copy_file(a / "checkpoint.bin", dir_ / "own.bin");
@@ -671,11 +641,11 @@ TEST_F(Cli, ResumeRefusesFilesOfAnotherRunNamingWhatDiffers) {
 
 TEST_F(Cli, ARunKilledDuringItsSetUpResumesFromTheStart) {
   const fs::path a = dir_ / "a", b = dir_ / "b";
-  ASSERT_EQ(orogen_cli("run --out '" + a.string() + "' " + kTiny, dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + a.string() + "' " + kTiny, dir_).status, 0);
   // Killed before the first checkpoint: only config.toml (and the lock) describe the run.
-  ASSERT_EQ(orogen_cli("run --out '" + b.string() + "' --abort-after-outputs 1 " + kTiny, dir_).status, 137);
+  ASSERT_EQ(run_orogen("run --out '" + b.string() + "' --abort-after-outputs 1 " + kTiny, dir_).status, 137);
   ASSERT_FALSE(fs::exists(b / "checkpoint.bin"));
-  const auto r = orogen_cli("run --resume '" + b.string() + "'", dir_);
+  const auto r = run_orogen("run --resume '" + b.string() + "'", dir_);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(slurp(b / "run.log").find("starting it again"), std::string::npos);
   expect_same_run(a, b);
@@ -683,7 +653,7 @@ TEST_F(Cli, ARunKilledDuringItsSetUpResumesFromTheStart) {
 
 TEST_F(Cli, AnUnstableSetUpExitsWith3AndLeavesNothing) {
   const fs::path run = dir_ / "soft";
-  const auto r = orogen_cli("run --out '" + run.string() + "' --set contact.kn=16 --set output.progress=never", dir_);
+  const auto r = run_orogen("run --out '" + run.string() + "' --set contact.kn=16 --set output.progress=never", dir_);
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_NE(r.err.find("set-up became unstable"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("raise contact.kn"), std::string::npos) << r.err;
@@ -696,14 +666,14 @@ TEST_F(Cli, AFullDiskStopsTheRunWithExit1AndItResumesBitForBit) {
   Unmount unmount{disk};
   const std::string args = kTiny + " --set layer.length=30 --set output.interval=0.5 --set output.vtp=false";
   const fs::path whole = dir_ / "whole", run = disk / "run";
-  ASSERT_EQ(orogen_cli("run --out '" + whole.string() + "' " + args, dir_).status, 0);
-  const auto r = orogen_cli("run --out '" + run.string() + "' " + args, dir_);
+  ASSERT_EQ(run_orogen("run --out '" + whole.string() + "' " + args, dir_).status, 0);
+  const auto r = run_orogen("run --out '" + run.string() + "' " + args, dir_);
   ASSERT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("orogen run --resume " + run.string()), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("terminate called"), std::string::npos) << r.err;
   ASSERT_TRUE(remount(disk, "size=50m"));
-  const auto resumed = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  const auto resumed = run_orogen("run --resume '" + run.string() + "'", dir_);
   ASSERT_EQ(resumed.status, 0) << resumed.err;
   EXPECT_EQ(temporary_files_in(run), std::vector<std::string>{});
   expect_same_run(whole, run);
@@ -714,26 +684,26 @@ TEST_F(Cli, AReadOnlyFolderIsRefusedWithExit1AndLeftAsItWas) {
   if (!mount_tmpfs(disk, "20m")) GTEST_SKIP() << "cannot mount a tmpfs here (needs root): read-only test skipped";
   Unmount unmount{disk};
   const fs::path run = disk / "run";
-  ASSERT_EQ(orogen_cli("run --out '" + run.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
+  ASSERT_EQ(run_orogen("run --out '" + run.string() + "' --abort-after-outputs 3 " + kTiny, dir_).status, 137);
   const auto before = names_in(disk);
   ASSERT_TRUE(remount(disk, "ro"));
-  auto r = orogen_cli("run --out '" + (disk / "new").string() + "' " + kTiny, dir_);
+  auto r = run_orogen("run --out '" + (disk / "new").string() + "' " + kTiny, dir_);
   EXPECT_EQ(r.status, 1);  // I/O, as for every command (docs/exit-codes.md)
   EXPECT_NE(r.err.find("Read-only file system"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find((disk / "new").string()), std::string::npos) << r.err;
-  r = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  r = run_orogen("run --resume '" + run.string() + "'", dir_);
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("cannot write in the run folder " + run.string()), std::string::npos) << r.err;
   EXPECT_EQ(names_in(disk), before);
   ASSERT_TRUE(remount(disk, "rw"));
-  r = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  r = run_orogen("run --resume '" + run.string() + "'", dir_);
   EXPECT_EQ(r.status, 0) << r.err;
 }
 
 TEST_F(Cli, SigintAndSigtermStopAtAStepWithACheckpointAndResumeBitForBit) {
   const std::string slow = kTiny + " --set settle.relax_time=20";
   const fs::path whole = dir_ / "whole";
-  ASSERT_EQ(orogen_cli("run --out '" + whole.string() + "' " + slow, dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + whole.string() + "' " + slow, dir_).status, 0);
   for (const int sig : {SIGINT, SIGTERM}) {
     const fs::path run = dir_ / (sig == SIGINT ? "int" : "term");
     const int status = signal_when_written(slow + " --out '" + run.string() + "'", run / "vtp" / "output_000003.vtp",
@@ -746,7 +716,7 @@ TEST_F(Cli, SigintAndSigtermStopAtAStepWithACheckpointAndResumeBitForBit) {
     EXPECT_NE(log.find("continue with orogen run --resume"), std::string::npos) << log;
     // A resume may set how it shows progress; the run's configuration stays as it was.
     const std::string config_before = slurp(run / "config.toml");
-    const auto resumed = orogen_cli("run --resume '" + run.string() + "' --set output.progress=never", dir_);
+    const auto resumed = run_orogen("run --resume '" + run.string() + "' --set output.progress=never", dir_);
     ASSERT_EQ(resumed.status, 0) << resumed.err;
     expect_same_run(whole, run);
     EXPECT_EQ(slurp(run / "config.toml"), config_before);
@@ -760,7 +730,7 @@ TEST_F(Cli, ASignalDuringTheSetUpStopsCleanlyAndTheRunResumesFromItsSetUp) {
       " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
       " --set wedge.s_end=0.1 --set wedge.outputs=2 --set output.progress=never --threads 1";
   const fs::path whole = dir_ / "whole", run = dir_ / "run";
-  ASSERT_EQ(orogen_cli("run --out '" + whole.string() + "'" + small, dir_).status, 0);
+  ASSERT_EQ(run_orogen("run --out '" + whole.string() + "'" + small, dir_).status, 0);
   // run.log is opened just before the set-up starts.
   const int status = signal_when_written(small + " --out '" + run.string() + "'", run / "run.log", SIGTERM,
                                          dir_ / "stopped.err");
@@ -769,7 +739,7 @@ TEST_F(Cli, ASignalDuringTheSetUpStopsCleanlyAndTheRunResumesFromItsSetUp) {
   EXPECT_NE(log.find("set-up: building the initial state"), std::string::npos) << log;
   EXPECT_NE(log.find("stopped by SIGTERM during the set-up"), std::string::npos) << log;
   EXPECT_FALSE(fs::exists(run / "checkpoint.bin"));
-  const auto resumed = orogen_cli("run --resume '" + run.string() + "'", dir_);
+  const auto resumed = run_orogen("run --resume '" + run.string() + "'", dir_);
   ASSERT_EQ(resumed.status, 0) << resumed.err;
   expect_same_run(whole, run);
   EXPECT_NE(slurp(run / "run.log").find("set-up done in"), std::string::npos);
@@ -781,34 +751,34 @@ TEST_F(Cli, AFinishedWedgeExtendedWithResumeEqualsOneRunToTheNewEnd) {
       " --set wedge.window=3 --set wedge.erosion_height=0.9 --set output.checkpoint_every=2"
       " --set output.progress=never --threads 1";
   const fs::path whole = dir_ / "whole", extended = dir_ / "extended";
-  ASSERT_EQ(orogen_cli("run --out '" + whole.string() + "'" + small + " --set wedge.s_end=0.4 --set wedge.outputs=8",
+  ASSERT_EQ(run_orogen("run --out '" + whole.string() + "'" + small + " --set wedge.s_end=0.4 --set wedge.outputs=8",
                        dir_).status,
             0);
-  ASSERT_EQ(orogen_cli("run --out '" + extended.string() + "'" + small + " --set wedge.s_end=0.2 --set wedge.outputs=4",
+  ASSERT_EQ(run_orogen("run --out '" + extended.string() + "'" + small + " --set wedge.s_end=0.2 --set wedge.outputs=4",
                        dir_).status,
             0);
   // A key that changes the physics is refused, naming it; the run is left as it was.
-  auto r = orogen_cli("run --resume '" + extended.string() + "' --set contact.mu=0.5", dir_);
+  auto r = run_orogen("run --resume '" + extended.string() + "' --set contact.mu=0.5", dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--set contact.mu=0.5 would change what the run computes"), std::string::npos) << r.err;
-  r = orogen_cli("run --resume '" + extended.string() + "'", dir_);
+  r = run_orogen("run --resume '" + extended.string() + "'", dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--set wedge.s_end="), std::string::npos) << r.err;
 
   // A new end alone keeps the output spacing; an end between two outputs is refused, naming one that fits.
   const std::string config_before = slurp(extended / "config.toml");
-  r = orogen_cli("run --resume '" + extended.string() + "' --set wedge.s_end=0.43", dir_);
+  r = run_orogen("run --resume '" + extended.string() + "' --set wedge.s_end=0.43", dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("0.43 is not a whole number of it: give an end that is (0.45 gives 9 outputs)"),
             std::string::npos) << r.err;
   EXPECT_EQ(slurp(extended / "config.toml"), config_before);
   // An earlier end would leave outputs past it: refused, nothing written.
-  r = orogen_cli("run --resume '" + extended.string() + "' --set wedge.s_end=0.1", dir_);
+  r = run_orogen("run --resume '" + extended.string() + "' --set wedge.s_end=0.1", dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("wedge.s_end = 0.1 is before the run's end, 0.2"), std::string::npos) << r.err;
   EXPECT_EQ(slurp(extended / "config.toml"), config_before);
   // Keys of speed and display may come along; they hold for this resume and are not stored.
-  r = orogen_cli("run --resume '" + extended.string() +
+  r = run_orogen("run --resume '" + extended.string() +
                      "' --set wedge.s_end=0.4 --set output.checkpoint_every=3 --set run.threads=2",
                  dir_);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -821,29 +791,29 @@ TEST_F(Cli, AFinishedWedgeExtendedWithResumeEqualsOneRunToTheNewEnd) {
 TEST_F(Cli, ReportRefusesBadFoldersNamingThem) {
   // The atlas itself is tested end to end in tests/python/test_atlas.py; here the checks the
   // C++ side makes before it starts Python.
-  const auto missing = orogen_cli("report '" + (dir_ / "missing").string() + "'", dir_);
+  const auto missing = run_orogen("report '" + (dir_ / "missing").string() + "'", dir_);
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("no such folder"), std::string::npos) << missing.err;
   const fs::path file = dir_ / "file.txt";
   spit(file, "x");
-  const auto not_dir = orogen_cli("report '" + file.string() + "'", dir_);
+  const auto not_dir = run_orogen("report '" + file.string() + "'", dir_);
   EXPECT_EQ(not_dir.status, 2);
   EXPECT_NE(not_dir.err.find("not a folder"), std::string::npos) << not_dir.err;
-  const auto out_file = orogen_cli("report '" + dir_.string() + "' --out '" + file.string() + "'", dir_);
+  const auto out_file = run_orogen("report '" + dir_.string() + "' --out '" + file.string() + "'", dir_);
   EXPECT_EQ(out_file.status, 2);
   EXPECT_NE(out_file.err.find("a file is there"), std::string::npos) << out_file.err;
-  EXPECT_EQ(orogen_cli("report", dir_).status, 2);  // DIR is required
+  EXPECT_EQ(run_orogen("report", dir_).status, 2);  // DIR is required
 }
 
 TEST_F(Cli, AnUnknownCommandIsNamedAndTheHelpIsClean) {
-  const auto r = orogen_cli("frobnicate --out x", dir_);
+  const auto r = run_orogen("frobnicate --out x", dir_);
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("unknown command 'frobnicate'; orogen takes a command first: run, render"), std::string::npos)
       << r.err;
-  const auto option = orogen_cli("--frob run", dir_);
+  const auto option = run_orogen("--frob run", dir_);
   EXPECT_EQ(option.status, 2);
   EXPECT_NE(option.err.find("unknown option '--frob'"), std::string::npos) << option.err;
-  const auto help = orogen_cli("render --help", dir_);
+  const auto help = run_orogen("render --help", dir_);
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("--no-animation"), std::string::npos) << help.out;
   EXPECT_EQ(help.out.find("{false}"), std::string::npos) << help.out;

@@ -15,8 +15,8 @@
 namespace orogen {
 namespace {
 
-constexpr double kKn = 1e4;
-constexpr double kMass = std::numbers::pi * 0.25;  // a disc of radius 0.5
+constexpr double kLinearKn = 1e4;
+constexpr double kDiscMass = std::numbers::pi * 0.25;  // a disc of radius 0.5
 
 struct Collision {
   double restitution = 0, contact_time = 0, max_overlap = 0;
@@ -26,8 +26,8 @@ struct Collision {
 Collision collide(double v0, double rate) {
   World w;
   w.body.gy = 0;
-  w.law.kn = kKn;
-  w.law.ks = 0.5 * kKn;
+  w.law.kn = kLinearKn;
+  w.law.ks = 0.5 * kLinearKn;
   w.law.mu = 0.3;
   w.law.normal_force = normal_law_index("hertz");
   w.law.damping = NormalDamping::PerMass;
@@ -59,8 +59,8 @@ TEST(HertzNormal, IsRegisteredAndNeedsThePerMassDashpot) {
 }
 
 TEST(HertzNormal, UndampedCollisionMatchesTheHertzContactTimeAndRebounds) {
-  const double m_eff = 0.5 * kMass, r_eff = 0.25;
-  const double k = kKn * std::sqrt(r_eff);
+  const double m_eff = 0.5 * kDiscMass, r_eff = 0.25;
+  const double k = kLinearKn * std::sqrt(r_eff);
   for (const double v0 : {0.2, 1.0}) {
     const Collision c = collide(v0, 0.0);
     const double delta_max = std::pow(5 * m_eff * v0 * v0 / (4 * k), 0.4);

@@ -18,39 +18,21 @@
 
 #include "io/hdf5_file.hpp"
 #include "io/snapshot_writer.hpp"
+#include "cli_runner.hpp"
 #include "temp_dir_fixture.hpp"
 
 namespace fs = std::filesystem;
+using orogen::testing::CliResult;
+using orogen::testing::run_orogen;
 using orogen::testing::slurp;
+using orogen::testing::spit;
 
 namespace {
-
-struct Result {
-  int status = -1;  // exit status, or 128 + signal
-  std::string out, err;
-};
-
-// Runs `orogen ARGS` through the shell (ARGS is shell syntax), output captured under `scratch`.
-Result orogen_cli(const std::string& args, const fs::path& scratch) {
-  const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  // fmt, not operator+: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
-  const std::string cmd = fmt::format("'{}' {} >'{}' 2>'{}'", OROGEN_BINARY, args, out.string(), err.string());
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : WIFSIGNALED(raw) ? 128 + WTERMSIG(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
-}
-
-void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 std::string quoted(const fs::path& p) { return fmt::format("'{}'", p.string()); }
 
 // Whether stderr is a clean refusal: an "error:" line, no crash report.
-void expect_refusal(const Result& r, int status, const std::string& names, const std::string& what) {
+void expect_refusal(const CliResult& r, int status, const std::string& names, const std::string& what) {
   EXPECT_EQ(r.status, status) << what << "\n" << r.err;
   EXPECT_NE(r.err.find("error"), std::string::npos) << what << "\n" << r.err;
   EXPECT_NE(r.err.find(names), std::string::npos) << what << ": message should name " << names << "\n" << r.err;
@@ -65,7 +47,7 @@ class RenderErrors : public orogen::testing::TempDirTest {
     shared_ = fs::temp_directory_path() / ("orogen_RenderErrors_run_" + std::to_string(::getpid()));
     fs::remove_all(shared_);
     fs::create_directories(shared_);
-    const Result r = orogen_cli(
+    const CliResult r = run_orogen(
         "run --set run.experiment=packing --set particles.packing=random_discs --set layer.length=10"
         " --set layer.thickness=3 --set contact.kn=1000 --set settle.relax_time=1 --set settle.ke_threshold=1e-3"
         " --set output.interval=2 --set output.vtp=false --set output.progress=never --threads 1 --out " +
@@ -88,7 +70,7 @@ class RenderErrors : public orogen::testing::TempDirTest {
     spit(run / "snapshots.h5", bytes);
     return run;
   }
-  Result render(const std::string& args) { return orogen_cli("render " + args, dir_); }
+  CliResult render(const std::string& args) { return run_orogen("render " + args, dir_); }
 
   static fs::path shared_;
 };
@@ -97,7 +79,7 @@ fs::path RenderErrors::shared_;
 
 TEST_F(RenderErrors, ARealRunStillRenders) {
   const fs::path run = run_copy();
-  const Result r = render(quoted(run) + " --no-animation --width 400");
+  const CliResult r = render(quoted(run) + " --no-animation --width 400");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::exists(run / "frames" / "frame_000000.png"));
 }
@@ -118,14 +100,14 @@ TEST_F(RenderErrors, OptionsOutOfRangeAreRefusedWith2NamingTheOption) {
       {"--frames-dir ''", "--frames-dir"},           {"--frames-dir ..", "--frames-dir"},
   };
   for (const auto& [args, names] : cases) {
-    const Result r = render(quoted(run) + " --no-animation " + args);
+    const CliResult r = render(quoted(run) + " --no-animation " + args);
     expect_refusal(r, 2, names, args);
   }
   EXPECT_FALSE(fs::exists(shared_ / "elsewhere"));
 }
 
 TEST_F(RenderErrors, UnknownFieldIsRefusedNamingItAndTheFieldsThereAre) {
-  const Result r = render(quoted(shared_ / "run") + " --no-animation --color field:NOPE");
+  const CliResult r = render(quoted(shared_ / "run") + " --no-animation --color field:NOPE");
   expect_refusal(r, 2, "field:NOPE", "--color field:NOPE");
   EXPECT_NE(r.err.find("there are: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("radius"), std::string::npos) << r.err;
@@ -206,7 +188,7 @@ TEST_F(RenderErrors, ByteFlippedSnapshotFilesNeverCrash) {
     std::string bad = good;
     for (std::size_t i = at; i < std::min(bad.size(), at + 8); ++i) bad[i] = static_cast<char>(~bad[i]);
     const fs::path run = run_with_snapshots(bad);
-    const Result r = render(quoted(run) + " --no-animation --width 200 --every 3");
+    const CliResult r = render(quoted(run) + " --no-animation --width 200 --every 3");
     const std::string what = "bytes " + std::to_string(at) + "..+8 flipped";
     // A flip inside the numbers may still draw (wrong) pictures; a flip in the format tag makes
     // it another kind of file (2); anything else is a damaged file (1).

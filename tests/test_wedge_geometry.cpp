@@ -13,7 +13,7 @@
 namespace orogen {
 namespace {
 
-constexpr double kH0 = 10, kR = 0.5;
+constexpr double kLayerH0 = 10, kDiscR = 0.5;
 // Synthetic wedge, one disc of radius 0.5 per integer x on top of a flat layer whose top is at
 // h0: the surface (disc tops) rises linearly from 11.7 at x = -16 (the pro front) to 18 at
 // x = 2 (the peak) and falls linearly to 11.8 at x = 8 (the retro front).
@@ -21,26 +21,26 @@ constexpr double kXp = -16, kXt = 2, kXr = 8, kTopP = 11.7, kTopT = 18, kTopR = 
 constexpr double kSlopeP = (kTopT - kTopP) / (kXt - kXp), kSlopeR = (kTopT - kTopR) / (kXr - kXt);
 
 double wedge_top(double x) {
-  if (x < kXp || x > kXr) return kH0;
+  if (x < kXp || x > kXr) return kLayerH0;
   return x <= kXt ? kTopP + kSlopeP * (x - kXp) : kTopT - kSlopeR * (x - kXt);
 }
 
 Discs flat_layer() {
   Discs d;
   std::int64_t id = 0;
-  for (int x = -40; x <= 40; ++x) d.add(id++, x, kH0 - kR, kR);
+  for (int x = -40; x <= 40; ++x) d.add(id++, x, kLayerH0 - kDiscR, kDiscR);
   return d;
 }
 
 Discs wedge_discs() {
   Discs d = flat_layer();
   std::int64_t id = static_cast<std::int64_t>(d.size());
-  for (int x = static_cast<int>(kXp); x <= static_cast<int>(kXr); ++x) d.add(id++, x, wedge_top(x) - kR, kR);
+  for (int x = static_cast<int>(kXp); x <= static_cast<int>(kXr); ++x) d.add(id++, x, wedge_top(x) - kDiscR, kDiscR);
   return d;
 }
 
 WedgeGeometryInput input_of(const Discs& d, double x_s = 0) {
-  return {d.x, d.y, d.radius, kH0, 1.0, 1.5, x_s};
+  return {d.x, d.y, d.radius, kLayerH0, 1.0, 1.5, x_s};
 }
 
 // Columns of width 1 centred on the integers.
@@ -73,7 +73,7 @@ TEST(WedgeGeometry, FrontsPeakHeightAndTapersOfATriangularWedge) {
   const Discs d = wedge_discs();
   const WedgeGeometry g = measure_wedge(input_of(d), surface_of(d));
   ASSERT_TRUE(g.has_front);
-  EXPECT_NEAR(g.h, kTopT - kH0, 1e-12);
+  EXPECT_NEAR(g.h, kTopT - kLayerH0, 1e-12);
   EXPECT_NEAR(g.x_peak, kXt, 1e-12);
   // Deformation fronts: extreme discs with centres above h0 + d_max = 11 (the wedge's toes at
   // 11.2 and 11.3).
@@ -106,7 +106,7 @@ TEST(WedgeGeometry, FittedTaperOfAContinuousWedgeMatchesToTheColumnWidth) {
     d.add(id++, x, top - 0.1, 0.1);
   }
   const Surface s = measure_surface(d, -25.0, 15.0, 0.23);
-  const WedgeGeometry g = measure_wedge({d.x, d.y, d.radius, kH0, 1.0, 1.5, 0.0}, s);
+  const WedgeGeometry g = measure_wedge({d.x, d.y, d.radius, kLayerH0, 1.0, 1.5, 0.0}, s);
   EXPECT_NEAR(g.x_peak, 0.0, 1e-9);
   EXPECT_NEAR(g.h, 5.0, 1e-9);
   EXPECT_NEAR(std::tan(g.alpha_fit), 0.25, 0.25 * 0.23 / 20);
@@ -121,7 +121,7 @@ TEST(WedgeGeometry, FittedTaperOfAContinuousWedgeMatchesToTheColumnWidth) {
 TEST(WedgeGeometry, NoFrontGivesTheSPointAndZeroTapers) {
   Discs d = flat_layer();
   // One disc a little above the layer, but below h0 + d_max: not a front.
-  d.add(1000, 12.0, kH0 + 0.8, kR);
+  d.add(1000, 12.0, kLayerH0 + 0.8, kDiscR);
   const WedgeGeometry g = measure_wedge(input_of(d, 3.5), surface_of(d));
   EXPECT_FALSE(g.has_front);
   EXPECT_EQ(g.dp, 3.5);
@@ -183,36 +183,36 @@ TEST(WedgeGeometry, FittedSlopeOfALinearSurfaceIsExact) {
 TEST(WedgeGeometry, TheSurfaceFrontIgnoresALooseDiscButNotAStretchOfRaisedSurface) {
   Discs d = wedge_discs();
   std::int64_t id = 1000;
-  d.add(id++, -30, kH0 + 1.4, kR);  // a loose disc on the layer, its centre above h0 + d_max
+  d.add(id++, -30, kLayerH0 + 1.4, kDiscR);  // a loose disc on the layer, its centre above h0 + d_max
   WedgeGeometryInput in = input_of(d);
   const Surface s0 = surface_of(d);
   EXPECT_EQ(measure_wedge(in, s0).dp, -30);  // the thesis's rule
   in.front_rule = FrontRule::Surface;
-  in.min_raised_width = 0.5 * kH0;
+  in.min_raised_width = 0.5 * kLayerH0;
   const WedgeGeometry g = measure_wedge(in, s0);
   EXPECT_TRUE(g.has_front);
   EXPECT_EQ(g.dp, kXp);
   EXPECT_EQ(g.dr, kXr);
   // Four more raised columns beside the disc: five in all, h0/2, so they count.
-  for (int x = -29; x <= -26; ++x) d.add(id++, x, kH0 + 1.4, kR);
+  for (int x = -29; x <= -26; ++x) d.add(id++, x, kLayerH0 + 1.4, kDiscR);
   in.x = d.x; in.y = d.y; in.radius = d.radius;
   EXPECT_EQ(measure_wedge(in, surface_of(d)).dp, -30);
   // Gaps up to max_bridged_gap join a stretch: two raised discs two empty columns ahead of the
   // wedge's front belong to it once gaps of 2.5 columns are bridged, not before.
   Discs near = wedge_discs();
-  near.add(id++, kXp - 4, kH0 + 1.4, kR);
-  near.add(id++, kXp - 3, kH0 + 1.4, kR);
+  near.add(id++, kXp - 4, kLayerH0 + 1.4, kDiscR);
+  near.add(id++, kXp - 3, kLayerH0 + 1.4, kDiscR);
   WedgeGeometryInput bridged = input_of(near);
   bridged.front_rule = FrontRule::Surface;
-  bridged.min_raised_width = 0.5 * kH0;
+  bridged.min_raised_width = 0.5 * kLayerH0;
   EXPECT_EQ(measure_wedge(bridged, surface_of(near)).dp, kXp);
-  bridged.max_bridged_gap = 0.25 * kH0;
+  bridged.max_bridged_gap = 0.25 * kLayerH0;
   EXPECT_EQ(measure_wedge(bridged, surface_of(near)).dp, kXp - 4);
   // Nothing raised: no front, the fronts at the S-point as before.
   const Discs flat = flat_layer();
   WedgeGeometryInput none = input_of(flat, 0.25);
   none.front_rule = FrontRule::Surface;
-  none.min_raised_width = 0.5 * kH0;
+  none.min_raised_width = 0.5 * kLayerH0;
   const WedgeGeometry g0 = measure_wedge(none, surface_of(flat));
   EXPECT_FALSE(g0.has_front);
   EXPECT_EQ(g0.dp, 0.25);
