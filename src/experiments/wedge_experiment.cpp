@@ -19,7 +19,6 @@
 namespace orogen {
 namespace {
 
-
 constexpr std::string_view kProBase = "pro_base", kRetroBase = "retro_base", kRetroEnd = "retro_end";
 constexpr std::string_view kPinHook = "wedge.pin_retro_base";
 
