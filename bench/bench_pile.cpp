@@ -28,7 +28,9 @@
 #include <vector>
 
 #include "median.hpp"
+#include "io/binary_archive.hpp"
 #include "world/world.hpp"
+#include "world/world_archive.hpp"
 
 using namespace orogen;
 
@@ -58,15 +60,15 @@ std::size_t bytes_of(const std::vector<T>& v) { return v.capacity() * sizeof(T);
 // Bytes held by the world's per-disc, per-pair and per-wall-contact arrays.
 std::size_t world_bytes(World& w) {
   std::size_t b = 0;
-  w.discs.for_each_array([&](std::string_view, auto& v) { b += bytes_of(v); });
-  const auto& L = w.neighbors;
-  const auto& P = w.contacts.pairs;
+  w.discs().for_each_array([&](std::string_view, auto& v) { b += bytes_of(v); });
+  const auto& L = w.neighbors();
+  const auto& P = w.contacts().pairs;
   b += bytes_of(L.first) + bytes_of(L.second) + bytes_of(P.xi) + bytes_of(P.gamma_n) + bytes_of(P.id_first) +
        bytes_of(P.id_second) + bytes_of(L.chunk_start) + bytes_of(L.x_ref) + bytes_of(L.y_ref);
-  const auto& wc = w.contacts.walls;
+  const auto& wc = w.contacts().walls;
   b += bytes_of(wc.wall) + bytes_of(wc.disc) + bytes_of(wc.disc_id) + bytes_of(wc.xi) + bytes_of(wc.gamma_n) +
        bytes_of(wc.touching) + bytes_of(wc.at_limit) + bytes_of(wc.traction_mass);
-  const auto& s = w.scratch;
+  const auto& s = w.scratch();
   b += bytes_of(s.forces);
   return b;
 }
@@ -85,30 +87,33 @@ double box_width(std::size_t n) { return 200.0 * std::sqrt(static_cast<double>(n
 // the pile so no disc meets an end point (the left wall may travel right by vpush * t).
 
 void make_walls(World& w, double W, double top, double mu) {
+  std::vector<Wall> walls;
   auto wall = [&](const char* name, double ax, double ay, double bx, double by) {
     Wall s;
     s.name = name;
     s.ax = ax; s.ay = ay; s.bx = bx; s.by = by;
     s.friction = WallFriction::Rough;
     s.mu = mu;
-    w.walls.push_back(s);
+    walls.push_back(s);
   };
   wall("floor", -0.5 * W, 0.0, 1.5 * W, 0.0);
   wall("left", 0.0, -10.0, 0.0, top);
   wall("right", W, -10.0, W, top);
+  w.set_walls(std::move(walls));
 }
 
 void set_law(World& w, const Params& p) {
-  w.law.kn = p.kn;
-  w.law.ks = 2.0 / 7.0 * p.kn;
-  w.law.mu = p.mu;
-  w.law.damping = NormalDamping::PerMass;
-  w.law.damping_rate = p.gn;
-  w.law.tangential_damping_ratio = 0.5;  // gamma_t = 50 = 0.5 gamma_n
-  w.dt = p.dt;
-  w.body.gx = 0.0;
-  w.body.gy = -1.0;
-  w.neighbors.skin = p.skin;
+  ContactLaw law = w.law();
+  law.kn = p.kn;
+  law.ks = 2.0 / 7.0 * p.kn;
+  law.mu = p.mu;
+  law.damping = NormalDamping::PerMass;
+  law.damping_rate = p.gn;
+  law.tangential_damping_ratio = 0.5;  // gamma_t = 50 = 0.5 gamma_n
+  w.set_contact_law(law);
+  w.set_time_step(p.dt);
+  w.set_body_force({.gx = 0.0, .gy = -1.0, .drag = 0.0});
+  w.set_neighbor_skin(p.skin);
 }
 
 // The lattice LAMMPS builds in in.settle: hex lattice of nearest-neighbour spacing a = 1.02,
@@ -139,86 +144,43 @@ void build_pile(World& w, const Params& p) {
 }
 
 // ---------------------------------------------------------------- settled-state cache
-// Binary: magic, n, then every Discs array by name, then walls and contact histories.
-constexpr std::uint64_t kMagic = 0x4f524f47454e5031ull;  // "OROGENP1"
-
-template <class T>
-void put(std::ostream& o, const std::vector<T>& v) {
-  const std::uint64_t n = v.size();
-  o.write(reinterpret_cast<const char*>(&n), sizeof n);
-  o.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
-}
-template <class T>
-void get(std::istream& in, std::vector<T>& v) {
-  std::uint64_t n = 0;
-  in.read(reinterpret_cast<char*>(&n), sizeof n);
-  v.resize(n);
-  in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
-}
-template <class T>
-void put1(std::ostream& o, const T& x) { o.write(reinterpret_cast<const char*>(&x), sizeof x); }
-template <class T>
-void get1(std::istream& in, T& x) { in.read(reinterpret_cast<char*>(&x), sizeof x); }
-
+// The checkpoint archive of the whole world (world/world_archive.hpp) with the --n and --seed
+// it was settled for; the contact law is the bench's own, set again on loading.
 void save_state(World& w, const Params& p, const std::string& path) {
-  std::ofstream o(path, std::ios::binary);
-  if (!o) throw std::runtime_error("cannot write " + path);
-  put1(o, kMagic);
-  put1(o, p.n);
-  put1(o, p.seed);
-  w.discs.for_each_array([&](std::string_view, auto& v) { put(o, v); });
-  for (const auto& s : w.walls) { put1(o, s.ax); put1(o, s.ay); put1(o, s.bx); put1(o, s.by); }
-  const auto& P = w.contacts.pairs;
-  const auto& wc = w.contacts.walls;
-  put(o, P.id_first); put(o, P.id_second); put(o, P.xi);
-  put(o, wc.disc_id); put(o, wc.wall); put(o, wc.xi);
-  put1(o, w.next_disc_id);
-  if (!o) throw std::runtime_error("short write to " + path);
+  ArchiveWriter out;
+  out.put_scalar<std::uint64_t>("bench_pile.n", p.n);
+  out.put_scalar<std::uint64_t>("bench_pile.seed", p.seed);
+  save_world(out, w);
+  out.finish(path);
 }
 
-// Restores a state saved with the same --n and --seed; the neighbour list is rebuilt on the
-// first step and carries the saved contact histories over (matched by stable ids).
+// Restores a state saved with the same --n and --seed, its neighbour list and contact histories.
 void load_state(World& w, const Params& p, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::uint64_t magic = 0;
-  std::size_t n = 0;
-  std::uint64_t seed = 0;
-  get1(in, magic); get1(in, n); get1(in, seed);
-  if (magic != kMagic) throw std::runtime_error(path + " is not a bench_pile state");
-  if (n != p.n || seed != p.seed)
+  const ArchiveReader in(path);
+  if (!in.has("bench_pile.n")) throw std::runtime_error(path + " is not a bench_pile state");
+  if (in.get_scalar<std::uint64_t>("bench_pile.n") != p.n || in.get_scalar<std::uint64_t>("bench_pile.seed") != p.seed)
     throw std::runtime_error(path + " was saved for another --n or --seed");
-  w.discs.for_each_array([&](std::string_view, auto& v) { get(in, v); });
-  const double W = box_width(p.n);
   set_law(w, p);
-  make_walls(w, W, 0.0, p.mu);
-  for (auto& s : w.walls) { get1(in, s.ax); get1(in, s.ay); get1(in, s.bx); get1(in, s.by); }
-  auto& P = w.contacts.pairs;
-  auto& wc = w.contacts.walls;
-  get(in, P.id_first); get(in, P.id_second); get(in, P.xi);
-  get(in, wc.disc_id); get(in, wc.wall); get(in, wc.xi);
-  get1(in, w.next_disc_id);
-  if (!in) throw std::runtime_error("truncated state file " + path);
-  w.neighbors.valid = false;
+  load_world(in, w);
 }
 
 // ---------------------------------------------------------------- measurements
 double mean_mass(const World& w) {
   double m = 0;
-  for (auto v : w.discs.mass) m += v;
-  return m / static_cast<double>(std::max<std::size_t>(1, w.discs.size()));
+  for (auto v : w.discs().mass) m += v;
+  return m / static_cast<double>(std::max<std::size_t>(1, w.discs().size()));
 }
 
 double top_y(const World& w) {
   double t = 0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) t = std::max(t, w.discs.y[i] + w.discs.radius[i]);
+  for (std::size_t i = 0; i < w.discs().size(); ++i) t = std::max(t, w.discs().y[i] + w.discs().radius[i]);
   return t;
 }
 
 // Touching disc pairs (from geometry; every touching pair is in the Verlet list).
 std::size_t touching_pairs(const World& w) {
-  const auto& L = w.neighbors;
-  const auto& d = w.discs;
+  const auto& L = w.neighbors();
+  const auto& d = w.discs();
   std::size_t c = 0;
   for (std::size_t p = 0; p < L.size(); ++p) {
     const auto i = L.first[p], j = L.second[p];
@@ -247,11 +209,8 @@ Result run_stage(const World& settled, const std::string& mode, int threads, std
   omp_set_num_threads(threads);
   if (mode == "push") w.set_wall_velocity("left", vpush, 0.0);
   // Build the list outside the timed part, as LAMMPS's setup does before "Loop time".
-  if (!w.neighbors.valid) {
-    w.rebuild_contacts(true);
-    w.moved = 0;
-  }
-  const std::uint64_t builds0 = w.neighbors.builds;
+  if (!w.neighbors().valid) w.rebuild_contacts(true);
+  const std::uint64_t builds0 = w.neighbors().builds;
   const double c0 = process_cpu_seconds();
   const auto t0 = std::chrono::steady_clock::now();
   for (std::uint64_t s = 0; s < steps; ++s) w.advance();
@@ -259,9 +218,9 @@ Result run_stage(const World& settled, const std::string& mode, int threads, std
   Result r;
   r.cpu_seconds = process_cpu_seconds() - c0;
   r.seconds = std::chrono::duration<double>(t1 - t0).count();
-  r.builds = w.neighbors.builds - builds0;
-  const double n = static_cast<double>(w.discs.size());
-  r.pairs_per_disc = static_cast<double>(w.neighbors.size()) / n;
+  r.builds = w.neighbors().builds - builds0;
+  const double n = static_cast<double>(w.discs().size());
+  r.pairs_per_disc = static_cast<double>(w.neighbors().size()) / n;
   r.contacts_per_disc = 2.0 * static_cast<double>(touching_pairs(w)) / n;
   r.world_bytes = world_bytes(w);
   return r;
@@ -311,33 +270,33 @@ int main(int argc, char** argv) {
     if (!load_path.empty()) {
       load_state(world, p, load_path);
       std::printf("# loaded settled state from %s: %zu discs, W = %.3f, top = %.3f\n", load_path.c_str(),
-                  world.discs.size(), box_width(p.n), top_y(world));
+                  world.discs().size(), box_width(p.n), top_y(world));
     } else {
       build_pile(world, p);
       omp_set_num_threads(settle_threads);
       const double drag = p.drag > 0 ? p.drag : 0.2 / mean_mass(world);
       std::printf("# %zu discs, W = %.3f, dt = %g (stable_dt %.3g), settling %llu steps with drag %.4f "
                   "then %llu undamped, %d threads\n",
-                  world.discs.size(), box_width(p.n), world.dt, world.stable_dt(),
+                  world.discs().size(), box_width(p.n), world.dt(), world.stable_dt(),
                   static_cast<unsigned long long>(settle), drag, static_cast<unsigned long long>(undamped),
                   settle_threads);
       std::fflush(stdout);
       const auto t0 = std::chrono::steady_clock::now();
-      world.body.drag = drag;
+      world.set_body_force({.gx = world.body().gx, .gy = world.body().gy, .drag = drag});
       for (std::uint64_t s = 0; s < settle; ++s) {
         world.advance();
         if ((s + 1) % 10000 == 0) {
           std::printf("#   step %llu: KE/disc %.3e, top %.3f\n", static_cast<unsigned long long>(s + 1),
-                      world.kinetic_energy() / static_cast<double>(world.discs.size()), top_y(world));
+                      world.kinetic_energy() / static_cast<double>(world.discs().size()), top_y(world));
           std::fflush(stdout);
         }
       }
-      world.body.drag = 0.0;
+      world.set_body_force({.gx = world.body().gx, .gy = world.body().gy, .drag = 0.0});
       for (std::uint64_t s = 0; s < undamped; ++s) world.advance();
       const double ts = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::printf("# settled in %.1f s (%llu list builds): KE/disc %.3e, top %.3f\n", ts,
-                  static_cast<unsigned long long>(world.neighbors.builds),
-                  world.kinetic_energy() / static_cast<double>(world.discs.size()), top_y(world));
+                  static_cast<unsigned long long>(world.neighbors().builds),
+                  world.kinetic_energy() / static_cast<double>(world.discs().size()), top_y(world));
       if (!save_path.empty()) {
         save_state(world, p, save_path);
         std::printf("# saved settled state to %s\n", save_path.c_str());
@@ -347,11 +306,10 @@ int main(int argc, char** argv) {
     std::cerr << "bench_pile: " << e.what() << "\n";
     return 1;
   }
-  world.step = 0;
-  world.time = 0;
+  world.restart_clock();
   std::fflush(stdout);
 
-  const auto n = world.discs.size();
+  const auto n = world.discs().size();
   for (const auto& mode : mode_list) {
     for (const int threads : thread_list) {
       std::vector<double> secs;

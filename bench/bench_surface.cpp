@@ -62,22 +62,22 @@ int main(int argc, char** argv) {
   }
   for (long s = 0; s < warmup && experiment->advance(world); ++s) {
   }
-  if (spec.column_width <= 0) spec.column_width = 2.3 * orogen::mean_radius(world.discs);
+  if (spec.column_width <= 0) spec.column_width = 2.3 * orogen::mean_radius(world.discs());
   orogen::SurfaceProcesses surface(spec, {0.4, 0.45, 0.5}, 1);
-  const double dt = spec.every * world.dt;
+  const double dt = spec.every * world.dt();
   std::vector<double> step_us, update_us, fraction;
   for (int r = 0; r < rounds; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s) world.advance();
     const auto t1 = std::chrono::steady_clock::now();
-    const auto [lo, hi] = std::minmax_element(world.discs.x.begin(), world.discs.x.end());
+    const auto [lo, hi] = std::minmax_element(world.discs().x.begin(), world.discs().x.end());
     for (int u = 0; u < updates; ++u) surface.update(world, *lo, *hi, dt);
     const auto t2 = std::chrono::steady_clock::now();
     step_us.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count() / steps);
     update_us.push_back(std::chrono::duration<double, std::micro>(t2 - t1).count() / updates);
     fraction.push_back(update_us.back() / (spec.every * step_us.back()));
     fmt::print("round {}: {:.1f} us/step, {:.1f} us/update, {:.3g}% of {} steps; {} discs\n", r + 1, step_us.back(),
-               update_us.back(), 100 * fraction.back(), spec.every, world.discs.size());
+               update_us.back(), 100 * fraction.back(), spec.every, world.discs().size());
   }
   fmt::print("{} rounds: median {:.1f} us/step, {:.1f} us/update; an update every {} steps costs {:.3g}% of them\n",
              rounds, orogen::bench::median(step_us), orogen::bench::median(update_us), spec.every,

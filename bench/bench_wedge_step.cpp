@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
       for (int s = 0; s < steps; ++s) {
         if (!experiment->advance(world)) {
           fmt::print(stderr, "bench_wedge_step: the run ended at step {}; ask for fewer --rounds or --steps\n",
-                     world.step);
+                     world.step());
           return 2;
         }
       }
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     all.push_back(us[1]);
     ratio.push_back(us[0] / us[1]);
     fmt::print("round {}: 1 thread {:.2f} us/step, {} threads {:.2f} us/step, {} discs\n", r + 1, us[0], threads,
-               us[1], world.discs.size());
+               us[1], world.discs().size());
   }
   fmt::print("{} rounds of {} steps: median 1 thread {:.2f} us/step, {} threads {:.2f} us/step; speed-up median {:.3f}\n",
              rounds, steps, orogen::bench::median(one), threads, orogen::bench::median(all), orogen::bench::median(ratio));

@@ -36,7 +36,7 @@ std::map<std::string, double> run_biaxial(std::vector<std::string> extra) {
   while (exp->advance(w)) {
     const auto& biaxial = dynamic_cast<const BiaxialExperiment&>(*exp);
     shearing_seen = shearing_seen || biaxial.phase() == BiaxialExperiment::Shearing;
-    if (w.time >= next) {
+    if (w.time() >= next) {
       exp->measure(w);
       exp->after_output(w);
       next += interval;

@@ -7,6 +7,7 @@
 
 #include "world/world.hpp"
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -17,27 +18,27 @@ struct CollisionResult {
 
 CollisionResult collide(double e, double v0) {
   World w;
-  w.body.gy = 0;
-  w.law.kn = 1e4;
-  w.law.ks = 5e3;
-  w.law.restitution = e;
-  w.law.mu = 0.3;
+  inside(w).body.gy = 0;
+  inside(w).law.kn = 1e4;
+  inside(w).law.ks = 5e3;
+  inside(w).law.restitution = e;
+  inside(w).law.mu = 0.3;
   w.add_disc(0.0, 0.0, 0.5);
   w.add_disc(1.2, 0.0, 0.5);
-  w.discs.vx[0] = v0 / 2;
-  w.discs.vx[1] = -v0 / 2;
-  w.dt = w.stable_dt() / 100;  // resolve the contact finely (the analytic case)
+  inside(w).discs.vx[0] = v0 / 2;
+  inside(w).discs.vx[1] = -v0 / 2;
+  inside(w).dt = w.stable_dt() / 100;  // resolve the contact finely (the analytic case)
   double t_start = -1, t_end = -1;
   std::vector<DiscForce> forces;
   testing::record_step_forces(w, forces);
   for (int s = 0; s < 200000 && t_end < 0; ++s) {
     w.advance();
-    const double gap = w.discs.x[1] - w.discs.x[0] - 1.0;
+    const double gap = w.discs().x[1] - w.discs().x[0] - 1.0;
     const bool pushing = std::fabs(forces[0].fx) > 0;
-    if (pushing && t_start < 0) t_start = w.time - w.dt;
-    if (t_start >= 0 && !pushing && gap < 0.2) t_end = w.time - w.dt;
+    if (pushing && t_start < 0) t_start = w.time() - w.dt();
+    if (t_start >= 0 && !pushing && gap < 0.2) t_end = w.time() - w.dt();
   }
-  const double v_after = w.discs.vx[1] - w.discs.vx[0];
+  const double v_after = w.discs().vx[1] - w.discs().vx[0];
   return {v_after / v0, t_end - t_start};
 }
 

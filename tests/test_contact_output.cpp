@@ -13,6 +13,7 @@
 #include "analysis/love_weber_stress.hpp"
 #include "io/snapshot_writer.hpp"
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -21,11 +22,11 @@ namespace {
 // floor; and a two-disc cluster on top if asked. Discs are never re-ordered (indices stay put).
 World layer_world(bool with_cluster = true) {
   World w;
-  w.law.kn = 1e4;
-  w.law.ks = 5e3;
-  w.law.mu = 0.3;
-  w.walls = {testing::wall(0, 0, 10, 0, WallFriction::Rough, 0.3), testing::wall(0, 0, 0, 30),
-             testing::wall(10, 0, 10, 30)};
+  inside(w).law.kn = 1e4;
+  inside(w).law.ks = 5e3;
+  inside(w).law.mu = 0.3;
+  w.set_walls({testing::wall(0, 0, 10, 0, WallFriction::Rough, 0.3), testing::wall(0, 0, 0, 30),
+             testing::wall(10, 0, 10, 30)});
   const double radii[] = {0.5, 0.4, 0.45};
   for (int j = 0; j < 6; ++j)
     for (int i = 0; i < 8; ++i) w.add_disc(0.7 + 1.2 * i + 0.05 * (j % 2), 0.6 + 1.2 * j, radii[(i + j) % 3]);
@@ -33,19 +34,19 @@ World layer_world(bool with_cluster = true) {
     const std::array<std::size_t, 2> body = {w.add_disc(4.5, 8.5, 0.5), w.add_disc(5.5, 8.5, 0.5)};
     w.add_cluster(body);
   }
-  w.sort_every = 0;
-  w.dt = 0.5 * w.stable_dt();
+  inside(w).sort_every = 0;
+  inside(w).dt = 0.5 * w.stable_dt();
   return w;
 }
 
 void settle(World& w, int steps) {
-  w.body.drag = 2.0;  // settle quickly; drag vanishes at rest
+  inside(w).body.drag = 2.0;  // settle quickly; drag vanishes at rest
   for (int s = 0; s < steps; ++s) w.advance();
 }
 
 // Sum over contacts of the force each disc feels, by disc index.
 std::vector<std::array<double, 2>> contact_force_sums(const World& w, const ContactList& c) {
-  std::vector<std::array<double, 2>> f(w.discs.size(), {0.0, 0.0});
+  std::vector<std::array<double, 2>> f(w.discs().size(), {0.0, 0.0});
   for (std::size_t k = 0; k < c.size(); ++k) {
     f[c.index_b[k]][0] += c.fx[k];
     f[c.index_b[k]][1] += c.fy[k];
@@ -66,15 +67,15 @@ TEST(ContactOutput, TakingItLeavesTheTrajectoryBitwiseTheSame) {
     without.advance();
   }
   EXPECT_GT(groups, 0u);
-  ASSERT_EQ(with.discs.size(), without.discs.size());
-  for (std::size_t i = 0; i < with.discs.size(); ++i) {
-    EXPECT_EQ(with.discs.x[i], without.discs.x[i]) << i;
-    EXPECT_EQ(with.discs.y[i], without.discs.y[i]) << i;
-    EXPECT_EQ(with.discs.vx[i], without.discs.vx[i]) << i;
-    EXPECT_EQ(with.discs.omega[i], without.discs.omega[i]) << i;
+  ASSERT_EQ(with.discs().size(), without.discs().size());
+  for (std::size_t i = 0; i < with.discs().size(); ++i) {
+    EXPECT_EQ(with.discs().x[i], without.discs().x[i]) << i;
+    EXPECT_EQ(with.discs().y[i], without.discs().y[i]) << i;
+    EXPECT_EQ(with.discs().vx[i], without.discs().vx[i]) << i;
+    EXPECT_EQ(with.discs().omega[i], without.discs().omega[i]) << i;
   }
-  EXPECT_EQ(with.contacts.pairs.xi, without.contacts.pairs.xi);
-  EXPECT_EQ(with.contacts.walls.xi, without.contacts.walls.xi);
+  EXPECT_EQ(with.contacts().pairs.xi, without.contacts().pairs.xi);
+  EXPECT_EQ(with.contacts().walls.xi, without.contacts().walls.xi);
 }
 
 // Also with a list the next step must rebuild first (measured on a rebuilt copy).
@@ -89,8 +90,8 @@ TEST(ContactOutput, ForcesAreThoseTheNextStepApplies) {
     std::vector<DiscForce> forces;
     testing::record_step_forces(w, forces);
     w.advance();
-    ASSERT_EQ(forces.size(), w.discs.size());
-    for (std::size_t i = 0; i < w.discs.size(); ++i) {
+    ASSERT_EQ(forces.size(), w.discs().size());
+    for (std::size_t i = 0; i < w.discs().size(); ++i) {
       const double scale = 1e-12 * (1 + std::fabs(forces[i].fx) + std::fabs(forces[i].fy));
       EXPECT_NEAR(sums[i][0], forces[i].fx, scale) << i << (stale_list ? " (stale list)" : "");
       EXPECT_NEAR(sums[i][1], forces[i].fy, scale) << i << (stale_list ? " (stale list)" : "");
@@ -102,20 +103,20 @@ TEST(ContactOutput, RestingColumnStressIsItsWeight) {
   const int n = 10;
   const double r = 0.5;
   World w;
-  w.law.kn = 1e4;
-  w.law.ks = 5e3;
-  w.law.mu = 0;
-  w.walls = {testing::wall(-5, 0, 5, 0)};
+  inside(w).law.kn = 1e4;
+  inside(w).law.ks = 5e3;
+  inside(w).law.mu = 0;
+  inside(w).walls = {testing::wall(-5, 0, 5, 0)};
   for (int k = 0; k < n; ++k) w.add_disc(0.0, r + k * 2 * r, r);
-  w.dt = 0.5 * w.stable_dt();
+  inside(w).dt = 0.5 * w.stable_dt();
   settle(w, 20000);
   const ContactList c = measure_contact_forces(w);
-  const DiscStress s = love_weber_stress(w.discs, c);
+  const DiscStress s = love_weber_stress(w.discs(), c);
   const double m = std::numbers::pi * r * r, area = m;  // mass pi r^2
-  for (std::size_t i = 0; i < w.discs.size(); ++i) {
+  for (std::size_t i = 0; i < w.discs().size(); ++i) {
     // The k-th disc from the top is pressed by k discs from above and held by k + 1 from below,
     // each load at about r from its centre: sigma_yy A = -(2k + 1) m g r (overlaps of ~1e-3 r aside).
-    const double k = std::round((2 * r * n - w.discs.y[i] - r) / (2 * r));
+    const double k = std::round((2 * r * n - w.discs().y[i] - r) / (2 * r));
     const double expected = -(2 * k + 1) * m * r / area;
     EXPECT_NEAR(s.yy[i], expected, 2e-3 * std::fabs(expected)) << "disc " << k << " from the top";
     EXPECT_NEAR(s.xx[i], 0.0, 1e-9);
@@ -133,13 +134,13 @@ TEST(ContactOutput, SettledLayerBalancesAndItsStressIsTheMomentOfItsWeight) {
   World w = layer_world(false);
   settle(w, 40000);
   const ContactList c = measure_contact_forces(w);
-  const DiscStress s = love_weber_stress(w.discs, c);
-  const auto& d = w.discs;
+  const DiscStress s = love_weber_stress(w.discs(), c);
+  const auto& d = w.discs();
   double weight = 0, mg_y = 0, mg_x = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
     weight += d.mass[i];
-    mg_y += d.mass[i] * w.body.gy * d.y[i];
-    mg_x += d.mass[i] * w.body.gy * d.x[i];
+    mg_y += d.mass[i] * w.body().gy * d.y[i];
+    mg_x += d.mass[i] * w.body().gy * d.x[i];
   }
   // Every disc: contact forces + weight = 0.
   const auto sums = contact_force_sums(w, c);
@@ -187,7 +188,7 @@ TEST(ContactOutput, GroupsCarryUnitsAndClusterPoses) {
   World w = layer_world();
   for (int s = 0; s < 3000; ++s) w.advance();
   SnapshotFrame frame;
-  frame.discs = &w.discs;
+  frame.discs = &w.discs();
   frame.groups = contact_output_groups(w, {true, true, 1.5});
   ASSERT_EQ(frame.groups.size(), 4u);
   EXPECT_EQ(frame.groups[0].name, "contacts");
@@ -208,7 +209,7 @@ TEST(ContactOutput, GroupsCarryUnitsAndClusterPoses) {
     EXPECT_EQ(h5::get_attr_string(ds.id(), "units"), "m g");
     EXPECT_FALSE(h5::get_attr_string(ds.id(), "description").empty());
     h5::Group clusters = h5::Group::open(out.id(), "clusters");
-    EXPECT_EQ(h5::read<double>(clusters.id(), "theta"), w.clusters.theta);
+    EXPECT_EQ(h5::read<double>(clusters.id(), "theta"), w.clusters().theta);
     const h5::Matrix seg = h5::read_2d(contacts.id(), "segment_points");
     EXPECT_EQ(seg.rows, 2 * fn.size());
     EXPECT_EQ(seg.cols, 2u);

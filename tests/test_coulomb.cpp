@@ -4,6 +4,7 @@
 #include "contact/contact_block.hpp"
 #include "contact/normal_laws.hpp"
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -63,22 +64,22 @@ TEST(Coulomb, LoadJustBelowTheLimitSticksJustAboveSlips) {
 struct TwoDiscs {
   World w;
   TwoDiscs() {
-    w.law.kn = 1e4;
-    w.law.ks = 5e3;
-    w.law.mu = 0.5;
-    w.law.restitution = 0.5;
+    inside(w).law.kn = 1e4;
+    inside(w).law.ks = 5e3;
+    inside(w).law.mu = 0.5;
+    inside(w).law.restitution = 0.5;
     w.add_disc(0.0, 0.0, 0.5);
     w.add_disc(0.0, 0.9999, 0.5);  // rests on the driven disc under gravity
-    w.discs.motion[0] = static_cast<std::uint8_t>(Motion::Kinematic);  // driven
-    w.dt = 0.5 * w.stable_dt();
+    inside(w).discs.motion[0] = static_cast<std::uint8_t>(Motion::Kinematic);  // driven
+    inside(w).dt = 0.5 * w.stable_dt();
   }
-  double history() const { return w.neighbors.size() ? w.contacts.pairs.xi[0] : 0.0; }
-  std::size_t driven() const { return w.discs.id[0] == 0 ? 0 : 1; }
+  double history() const { return w.neighbors().size() ? w.contacts().pairs.xi[0] : 0.0; }
+  std::size_t driven() const { return w.discs().id[0] == 0 ? 0 : 1; }
   // Slides the driven disc along the tangent so that the spring stretches.
   void shear(int steps) {
-    w.discs.vx[driven()] = 0.01;
+    inside(w).discs.vx[driven()] = 0.01;
     for (int s = 0; s < steps; ++s) w.advance();
-    w.discs.vx[driven()] = 0.0;
+    inside(w).discs.vx[driven()] = 0.0;
   }
 };
 
@@ -87,10 +88,10 @@ TEST(Coulomb, HistoryIsKeptAcrossListRebuilds) {
   t.shear(50);
   const double before = t.history();
   ASSERT_NE(before, 0.0);
-  const auto builds = t.w.neighbors.builds;
+  const auto builds = t.w.neighbors().builds;
   // Rebuild with spatial re-ordering: the pair gets new indices, the spring its old stretch.
   t.w.rebuild_contacts(true);
-  EXPECT_EQ(t.w.neighbors.builds, builds + 1);
+  EXPECT_EQ(t.w.neighbors().builds, builds + 1);
   EXPECT_EQ(t.history(), before);
 }
 
@@ -101,11 +102,11 @@ TEST(Coulomb, HistoryIsDroppedOnSeparation) {
   // Pull the driven disc away, beyond contact but within the skin: the pair stays listed,
   // its history is gone.
   const auto k = t.driven();
-  t.w.discs.vy[k] = -0.2;
+  inside(t.w).discs.vy[k] = -0.2;
   for (int s = 0; s < 100; ++s) t.w.advance();
-  t.w.discs.vy[k] = 0.0;
+  inside(t.w).discs.vy[k] = 0.0;
   t.w.advance();
-  ASSERT_EQ(t.w.neighbors.size(), 1u);
+  ASSERT_EQ(t.w.neighbors().size(), 1u);
   EXPECT_EQ(t.history(), 0.0);
 }
 

@@ -10,6 +10,7 @@
 
 #include "contact/normal_laws.hpp"
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -19,13 +20,13 @@ constexpr double kMass = std::numbers::pi * 0.25;  // a disc of radius 0.5
 
 World empty_world(std::string_view normal_law, bool per_mass, double rate_or_e) {
   World w;
-  w.body.gy = 0;
-  w.law.kn = kKn;
-  w.law.ks = 0.5 * kKn;
-  w.law.mu = 0.3;
-  w.law.normal_force = normal_law_index(normal_law);
-  w.law.damping = per_mass ? NormalDamping::PerMass : NormalDamping::Restitution;
-  (per_mass ? w.law.damping_rate : w.law.restitution) = rate_or_e;
+  inside(w).body.gy = 0;
+  inside(w).law.kn = kKn;
+  inside(w).law.ks = 0.5 * kKn;
+  inside(w).law.mu = 0.3;
+  inside(w).law.normal_force = normal_law_index(normal_law);
+  inside(w).law.damping = per_mass ? NormalDamping::PerMass : NormalDamping::Restitution;
+  (per_mass ? inside(w).law.damping_rate : inside(w).law.restitution) = rate_or_e;
   return w;
 }
 
@@ -33,21 +34,21 @@ World empty_world(std::string_view normal_law, bool per_mass, double rate_or_e) 
 double pair_restitution(World w) {
   w.add_disc(0.0, 0.0, 0.5);
   w.add_disc(1.1, 0.0, 0.5);
-  w.discs.vx[0] = 0.5;
-  w.discs.vx[1] = -0.5;
-  w.dt = w.stable_dt() / 100;  // resolve the contact finely (the analytic case)
-  while (w.time < 0.4) w.advance();
-  return w.discs.vx[1] - w.discs.vx[0];
+  inside(w).discs.vx[0] = 0.5;
+  inside(w).discs.vx[1] = -0.5;
+  inside(w).dt = w.stable_dt() / 100;  // resolve the contact finely (the analytic case)
+  while (w.time() < 0.4) w.advance();
+  return w.discs().vx[1] - w.discs().vx[0];
 }
 
 // Restitution of a disc falling at unit speed onto a fixed smooth wall.
 double wall_restitution(World w) {
-  w.walls = {testing::wall(-5, 0, 5, 0)};
+  inside(w).walls = {testing::wall(-5, 0, 5, 0)};
   w.add_disc(0.0, 0.6, 0.5);
-  w.discs.vy[0] = -1.0;
-  w.dt = w.stable_dt() / 100;
-  while (w.time < 0.4) w.advance();
-  return w.discs.vy[0];
+  inside(w).discs.vy[0] = -1.0;
+  inside(w).dt = w.stable_dt() / 100;
+  while (w.time() < 0.4) w.advance();
+  return w.discs().vy[0];
 }
 
 // Closed forms (MODEL §3): the clamped dashpot lets go before delta = 0

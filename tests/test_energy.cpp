@@ -3,31 +3,32 @@
 
 #include "util/random.hpp"
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
 
 TEST(Energy, FrictionlessUndampedGasInABoxConservesEnergy) {
   World w;
-  w.body.gy = 0;
-  w.law.kn = 1e4;
-  w.law.ks = 5e3;
-  w.law.mu = 0;
-  w.law.restitution = 1.0;
+  inside(w).body.gy = 0;
+  inside(w).law.kn = 1e4;
+  inside(w).law.ks = 5e3;
+  inside(w).law.mu = 0;
+  inside(w).law.restitution = 1.0;
   const double side = 24;
-  w.walls = {testing::wall(0, 0, side, 0), testing::wall(side, 0, side, side), testing::wall(side, side, 0, side),
-             testing::wall(0, side, 0, 0)};
+  w.set_walls({testing::wall(0, 0, side, 0), testing::wall(side, 0, side, side), testing::wall(side, side, 0, side),
+             testing::wall(0, side, 0, 0)});
   Random rng(7);
   for (int row = 0; row < 15; ++row)
     for (int col = 0; col < 15; ++col) {
       const auto i = w.add_disc(1.0 + col * 1.5, 1.0 + row * 1.5, 0.5 * rng.uniform(0.7, 1.0));
-      w.discs.vx[i] = rng.uniform(-1, 1);
-      w.discs.vy[i] = rng.uniform(-1, 1);
+      inside(w).discs.vx[i] = rng.uniform(-1, 1);
+      inside(w).discs.vy[i] = rng.uniform(-1, 1);
     }
   // A tenth of the stability limit: the energy error of symplectic Euler at the switch-on and
   // switch-off of each contact grows with dt. Over 1e5 steps and three seeds the drift was
   // below 2.2e-4 here; at a quarter of the limit it reached 1.8e-3 for one seed, at half 5e-3.
-  w.dt = 0.1 * w.stable_dt();
+  inside(w).dt = 0.1 * w.stable_dt();
   auto energy = [&] { return w.kinetic_energy() + testing::spring_energy(w); };
   // Average over a window: symplectic Euler's energy oscillates within each collision.
   auto window_mean = [&](int steps) {

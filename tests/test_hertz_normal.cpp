@@ -11,6 +11,7 @@
 
 #include "contact/normal_laws.hpp"
 #include "world/world.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -25,29 +26,29 @@ struct Collision {
 // Two equal discs meeting head-on at closing speed v0, per-unit-mass dashpot `rate`.
 Collision collide(double v0, double rate) {
   World w;
-  w.body.gy = 0;
-  w.law.kn = kLinearKn;
-  w.law.ks = 0.5 * kLinearKn;
-  w.law.mu = 0.3;
-  w.law.normal_force = normal_law_index("hertz");
-  w.law.damping = NormalDamping::PerMass;
-  w.law.damping_rate = rate;
+  inside(w).body.gy = 0;
+  inside(w).law.kn = kLinearKn;
+  inside(w).law.ks = 0.5 * kLinearKn;
+  inside(w).law.mu = 0.3;
+  inside(w).law.normal_force = normal_law_index("hertz");
+  inside(w).law.damping = NormalDamping::PerMass;
+  inside(w).law.damping_rate = rate;
   w.add_disc(0.0, 0.0, 0.5);
   w.add_disc(1.05, 0.0, 0.5);
-  w.discs.vx[0] = 0.5 * v0;
-  w.discs.vx[1] = -0.5 * v0;
-  w.dt = 2e-6;  // t_c / dt of some ten thousand: the contact resolved finely
+  inside(w).discs.vx[0] = 0.5 * v0;
+  inside(w).discs.vx[1] = -0.5 * v0;
+  inside(w).dt = 2e-6;  // t_c / dt of some ten thousand: the contact resolved finely
   Collision c;
   double t_in = -1, t_out = -1;
-  while (w.time < 0.4 && t_out < 0) {
+  while (w.time() < 0.4 && t_out < 0) {
     w.advance();
-    const double overlap = 1.0 - (w.discs.x[1] - w.discs.x[0]);
+    const double overlap = 1.0 - (w.discs().x[1] - w.discs().x[0]);
     c.max_overlap = std::max(c.max_overlap, overlap);
-    if (overlap > 0 && t_in < 0) t_in = w.time;
-    if (overlap <= 0 && t_in >= 0) t_out = w.time;
+    if (overlap > 0 && t_in < 0) t_in = w.time();
+    if (overlap <= 0 && t_in >= 0) t_out = w.time();
   }
   c.contact_time = t_out - t_in;
-  c.restitution = (w.discs.vx[1] - w.discs.vx[0]) / v0;
+  c.restitution = (w.discs().vx[1] - w.discs().vx[0]) / v0;
   return c;
 }
 

@@ -7,6 +7,7 @@
 #include <array>
 
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -17,26 +18,26 @@ struct SlideResult {
 
 SlideResult slide(double tan_phi, double mu_wall, double duration) {
   World w;
-  w.law.kn = 1e4;
-  w.law.ks = 5e3;
-  w.law.mu = 0.5;
-  w.walls = {testing::wall(-100, 0, 100, 0, WallFriction::Rough, mu_wall)};
+  inside(w).law.kn = 1e4;
+  inside(w).law.ks = 5e3;
+  inside(w).law.mu = 0.5;
+  inside(w).walls = {testing::wall(-100, 0, 100, 0, WallFriction::Rough, mu_wall)};
   // Equal discs: two on the wall, one on top of them.
   const std::array<std::size_t, 3> idx = {w.add_disc(-0.5, 0.5, 0.5), w.add_disc(0.5, 0.5, 0.5),
                                           w.add_disc(0.0, 0.5 + std::sqrt(3.0) / 2.0, 0.5)};
   w.add_cluster(idx);
-  w.dt = 0.5 * w.stable_dt();
+  inside(w).dt = 0.5 * w.stable_dt();
   // Let it sit down under upright gravity first, then tilt gravity.
-  w.body.drag = 2.0;
+  inside(w).body.drag = 2.0;
   for (int s = 0; s < 4000; ++s) w.advance();
-  w.body.drag = 0;
+  inside(w).body.drag = 0;
   const double phi = std::atan(tan_phi);
-  w.body.gx = std::sin(phi);
-  w.body.gy = -std::cos(phi);
-  const double x_start = w.clusters.x[0];
-  const int steps = static_cast<int>(duration / w.dt);
+  inside(w).body.gx = std::sin(phi);
+  inside(w).body.gy = -std::cos(phi);
+  const double x_start = w.clusters().x[0];
+  const int steps = static_cast<int>(duration / w.dt());
   for (int s = 0; s < steps; ++s) w.advance();
-  return {w.clusters.x[0] - x_start, w.clusters.vx[0]};
+  return {w.clusters().x[0] - x_start, w.clusters().vx[0]};
 }
 
 TEST(Incline, ClusterStaysBelowFrictionAngle) {
@@ -65,36 +66,36 @@ struct WeakeningSlide {
 
 WeakeningSlide weakening_slide(double fraction) {
   World w;
-  w.law.kn = 1e4;
-  w.law.ks = 5e3;
-  w.law.mu = 0.5;
-  w.materials.list = {Material{.name = "rock", .friction = 0.5, .friction_residual = 0.5, .bond = {}}};
+  inside(w).law.kn = 1e4;
+  inside(w).law.ks = 5e3;
+  inside(w).law.mu = 0.5;
+  inside(w).materials.list = {Material{.name = "rock", .friction = 0.5, .friction_residual = 0.5, .bond = {}}};
   Wall floor = testing::wall(-100, 0, 400, 0, WallFriction::Rough, 0.5);
   set_weakening(floor, BaseWeakening{fraction, 1.0});
-  w.walls = {floor};
+  inside(w).walls = {floor};
   const std::array<std::size_t, 3> idx = {w.add_disc(-0.5, 0.5, 0.5), w.add_disc(0.5, 0.5, 0.5),
                                           w.add_disc(0.0, 0.5 + std::sqrt(3.0) / 2.0, 0.5)};
   w.add_cluster(idx);
   w.enable_materials();
-  w.dt = 0.5 * w.stable_dt();
-  w.body.drag = 2.0;
+  inside(w).dt = 0.5 * w.stable_dt();
+  inside(w).body.drag = 2.0;
   for (int s = 0; s < 4000; ++s) w.advance();
-  w.body.drag = 0;
+  inside(w).body.drag = 0;
   const double phi = std::atan(0.4);
-  w.body.gx = std::sin(phi);
-  w.body.gy = -std::cos(phi);
-  w.clusters.vx[0] = 1.0;
-  const double t0 = w.time;
+  inside(w).body.gx = std::sin(phi);
+  inside(w).body.gy = -std::cos(phi);
+  inside(w).clusters.vx[0] = 1.0;
+  const double t0 = w.time();
   WeakeningSlide r;
   double v_at_20 = 0, t_at_20 = 0;
-  const int steps = static_cast<int>(30.0 / w.dt);
+  const int steps = static_cast<int>(30.0 / w.dt());
   for (int s = 0; s < steps; ++s) {
     w.advance();
-    if (r.stopped_after < 0 && std::fabs(w.clusters.vx[0]) < 1e-3) r.stopped_after = w.time - t0;
-    if (s == static_cast<int>(20.0 / w.dt)) { v_at_20 = w.clusters.vx[0]; t_at_20 = w.time; }
+    if (r.stopped_after < 0 && std::fabs(w.clusters().vx[0]) < 1e-3) r.stopped_after = w.time() - t0;
+    if (s == static_cast<int>(20.0 / w.dt())) { v_at_20 = w.clusters().vx[0]; t_at_20 = w.time(); }
   }
-  r.late_acceleration = (w.clusters.vx[0] - v_at_20) / (w.time - t_at_20);
-  r.slip = std::min(w.discs.slip[0], w.discs.slip[1]);
+  r.late_acceleration = (w.clusters().vx[0] - v_at_20) / (w.time() - t_at_20);
+  r.slip = std::min(w.discs().slip[0], w.discs().slip[1]);
   return r;
 }
 

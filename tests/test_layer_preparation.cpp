@@ -31,7 +31,7 @@ World placed(PackingKind kind, Placement placement) {
 
 // Largest overlap between discs of different bodies (n^2: the placements are small).
 double largest_overlap(const World& w) {
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   double worst = 0;
   for (std::size_t i = 0; i < d.size(); ++i)
     for (std::size_t j = i + 1; j < d.size(); ++j) {
@@ -46,12 +46,12 @@ TEST(LayerPreparation, EveryPlacementStartsWithoutOverlapInsideTheBox) {
     for (const auto placement : {Placement::Grid, Placement::Lattice, Placement::Rain}) {
       SCOPED_TRACE(std::string(packing_kind_name(kind)) + ", " + std::string(placement_name(placement)));
       const World w = placed(kind, placement);
-      ASSERT_GT(w.discs.size(), 200u);
+      ASSERT_GT(w.discs().size(), 200u);
       EXPECT_LE(largest_overlap(w), 1e-12);
-      for (std::size_t i = 0; i < w.discs.size(); ++i) {
-        EXPECT_GE(w.discs.x[i] - w.discs.radius[i], 0.0);
-        EXPECT_LE(w.discs.x[i] + w.discs.radius[i], 40.0);
-        EXPECT_GE(w.discs.y[i] - w.discs.radius[i], 0.0);
+      for (std::size_t i = 0; i < w.discs().size(); ++i) {
+        EXPECT_GE(w.discs().x[i] - w.discs().radius[i], 0.0);
+        EXPECT_LE(w.discs().x[i] + w.discs().radius[i], 40.0);
+        EXPECT_GE(w.discs().y[i] - w.discs().radius[i], 0.0);
       }
     }
 }
@@ -61,21 +61,21 @@ TEST(LayerPreparation, EveryPlacementStartsWithoutOverlapInsideTheBox) {
 TEST(LayerPreparation, TheLatticePutsEachDiscOnALatticePoint) {
   const World w = placed(PackingKind::RandomDiscs, Placement::Lattice);
   const double row_height = std::sqrt(3.0) / 2.0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) {
-    const double row = (w.discs.y[i] - 0.5) / row_height;
+  for (std::size_t i = 0; i < w.discs().size(); ++i) {
+    const double row = (w.discs().y[i] - 0.5) / row_height;
     ASSERT_NEAR(row, std::round(row), 1e-9);
     const double shift = static_cast<long>(std::round(row)) % 2 ? 0.5 : 0.0;
-    const double column = w.discs.x[i] - 0.5 - shift;
+    const double column = w.discs().x[i] - 0.5 - shift;
     ASSERT_NEAR(column, std::round(column), 1e-9);
   }
 }
 
 // A rain spreads the same particles six times higher than the grid, at random heights.
 TEST(LayerPreparation, TheRainSpreadsTheParticlesUpward) {
-  auto top = [](const World& w) { return *std::max_element(w.discs.y.begin(), w.discs.y.end()); };
+  auto top = [](const World& w) { return *std::max_element(w.discs().y.begin(), w.discs().y.end()); };
   const World grid = placed(PackingKind::RandomDiscs, Placement::Grid);
   const World rain = placed(PackingKind::RandomDiscs, Placement::Rain);
-  EXPECT_EQ(grid.discs.size(), rain.discs.size());
+  EXPECT_EQ(grid.discs().size(), rain.discs().size());
   EXPECT_NEAR(top(rain) / top(grid), 6.0, 0.6);
 }
 

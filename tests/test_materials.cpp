@@ -10,6 +10,7 @@
 #include "contact/materials.hpp"
 #include "world/world.hpp"
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 using namespace orogen;
 
@@ -20,11 +21,11 @@ constexpr double kKn = 1e4, kKs = 5e3;
 // A weightless world of one material, the given discs (radius 0.5) at rest.
 World bonded_world(const std::vector<std::pair<double, double>>& centres, const Material& m) {
   World w;
-  w.body.gx = w.body.gy = 0;
-  w.law.kn = kKn;
-  w.law.ks = kKs;
-  w.dt = 1e-3;
-  w.materials.list = {m};
+  inside(w).body.gx = inside(w).body.gy = 0;
+  inside(w).law.kn = kKn;
+  inside(w).law.ks = kKs;
+  inside(w).dt = 1e-3;
+  inside(w).materials.list = {m};
   for (const auto& [x, y] : centres) w.add_disc(x, y, 0.5);
   w.enable_materials();
   return w;
@@ -44,16 +45,16 @@ Material bonding(double tensile, double shear) {
 // step.
 void drive_second_disc(World& w, double vx, double vy) {
   w.edit_motion([&](MotionEdit& e) { e.disc(0, Motion::Kinematic); });
-  w.discs.vx[1] = vx;
-  w.discs.vy[1] = vy;
-  const double x0 = w.discs.x[1], y0 = w.discs.y[1];
-  w.hooks.add(Stage::AfterIntegration, "drive", [=](World& world) {
-    const double t = static_cast<double>(world.step + 1) * world.dt;
-    world.discs.x[1] = x0 + vx * t;
-    world.discs.y[1] = y0 + vy * t;
-    world.discs.vx[1] = vx;
-    world.discs.vy[1] = vy;
-    world.discs.omega[1] = 0;
+  inside(w).discs.vx[1] = vx;
+  inside(w).discs.vy[1] = vy;
+  const double x0 = w.discs().x[1], y0 = w.discs().y[1];
+  w.hooks().add(Stage::AfterIntegration, "drive", [=](World& world) {
+    const double t = static_cast<double>(world.step() + 1) * world.dt();
+    inside(world).discs.x[1] = x0 + vx * t;
+    inside(world).discs.y[1] = y0 + vy * t;
+    inside(world).discs.vx[1] = vx;
+    inside(world).discs.vy[1] = vy;
+    inside(world).discs.omega[1] = 0;
   });
 }
 
@@ -65,28 +66,28 @@ TEST(Bonds, APairPulledApartBreaksInTensionAtItsStrength) {
   ASSERT_EQ(w.make_bonds(0, 2, 1), 1u);
   drive_second_disc(w, v, 0);
   const double area = 1.0;  // 2 R, R = lambda r = 0.5
-  const double per_step = kKn * area * v * w.dt;
+  const double per_step = kKn * area * v * w.dt();
   double last_fn = 0;
   int steps = 0;
-  while (!w.bonds.id_a.empty() && steps < 100000) {
+  while (!w.bonds().id_a.empty() && steps < 100000) {
     w.advance();
     ++steps;
-    if (!w.bonds.id_a.empty()) {
-      last_fn = w.bonds.fn[0];
+    if (!w.bonds().id_a.empty()) {
+      last_fn = w.bonds().fn[0];
       // Elastic until it breaks: k_n A times the opening.
-      EXPECT_NEAR(last_fn, kKn * area * (w.discs.x[1] - w.discs.x[0] - 1.0), 1e-9 * strength) << steps;
+      EXPECT_NEAR(last_fn, kKn * area * (w.discs().x[1] - w.discs().x[0] - 1.0), 1e-9 * strength) << steps;
     }
   }
-  ASSERT_EQ(w.bonds.breaks.size(), 1u);
-  EXPECT_EQ(w.bonds.breaks[0].mode, BondBreakMode::Tension);
-  EXPECT_EQ(w.bonds.breaks[0].id_a, 0);
-  EXPECT_EQ(w.bonds.breaks[0].id_b, 1);
+  ASSERT_EQ(w.bonds().breaks.size(), 1u);
+  EXPECT_EQ(w.bonds().breaks[0].mode, BondBreakMode::Tension);
+  EXPECT_EQ(w.bonds().breaks[0].id_a, 0);
+  EXPECT_EQ(w.bonds().breaks[0].id_b, 1);
   // It held at last_fn and broke on the step that would have carried it past the strength.
   EXPECT_LT(last_fn / area, strength);
   EXPECT_GE((last_fn + per_step * (1 + 1e-9)) / area, strength);
   // The broken bond is gone for good: the pair, apart, feels nothing.
   w.advance();
-  EXPECT_TRUE(w.bonds.id_a.empty());
+  EXPECT_TRUE(w.bonds().id_a.empty());
 }
 
 TEST(Bonds, APairShearedBreaksInShearAtItsStrength) {
@@ -94,16 +95,16 @@ TEST(Bonds, APairShearedBreaksInShearAtItsStrength) {
   World w = bonded_world({{0, 0}, {1, 0}}, bonding(100, strength));
   ASSERT_EQ(w.make_bonds(0, 2, 1), 1u);
   drive_second_disc(w, 0, v);
-  const double area = 1.0, per_step = kKs * area * v * w.dt;
+  const double area = 1.0, per_step = kKs * area * v * w.dt();
   double last_fs = 0;
   int steps = 0;
-  while (!w.bonds.id_a.empty() && steps < 100000) {
+  while (!w.bonds().id_a.empty() && steps < 100000) {
     w.advance();
     ++steps;
-    if (!w.bonds.id_a.empty()) last_fs = w.bonds.fs[0];
+    if (!w.bonds().id_a.empty()) last_fs = w.bonds().fs[0];
   }
-  ASSERT_EQ(w.bonds.breaks.size(), 1u);
-  EXPECT_EQ(w.bonds.breaks[0].mode, BondBreakMode::Shear);
+  ASSERT_EQ(w.bonds().breaks.size(), 1u);
+  EXPECT_EQ(w.bonds().breaks[0].mode, BondBreakMode::Shear);
   EXPECT_LT(last_fs, 0);  // resists b moving along +t
   EXPECT_LT(std::fabs(last_fs) / area, strength);
   // The normal direction turns a little as b moves up: allow 1% beyond one step's increment.
@@ -124,16 +125,16 @@ TEST(Bonds, ABondedBeamBendsAsTheDiscreteBeamSays) {
   World w = bonded_world(centres, bonding(1e9, 1e9));
   ASSERT_EQ(w.make_bonds(0, n + 1, 1), static_cast<std::size_t>(n));
   w.edit_motion([&](MotionEdit& e) { e.disc(0, Motion::Kinematic); });
-  w.body.drag = 0.5;  // to rest
+  inside(w).body.drag = 0.5;  // to rest
   const std::size_t tip = n;
-  w.hooks.add(Stage::AfterForces, "load", [&](World& world) { world.scratch.forces[tip].fy -= P; });
+  w.hooks().add(Stage::AfterForces, "load", [&](World& world) { inside(world).scratch.forces[tip].fy -= P; });
   for (int s = 0; s < 200000; ++s) w.advance();
   const double area = 1.0, inertia = 1.0 / 12;
   const double expected = P * n * (4.0 * n * n - 1) / (12 * kKn * inertia) + n * P / (kKs * area);
-  const double deflection = -w.discs.y[tip];
+  const double deflection = -w.discs().y[tip];
   EXPECT_NEAR(deflection, expected, 1e-5 * expected) << "beam theory " << expected;
-  EXPECT_LT(std::fabs(w.discs.vy[tip]), 1e-9);  // at rest
-  EXPECT_TRUE(w.bonds.breaks.empty());
+  EXPECT_LT(std::fabs(w.discs().vy[tip]), 1e-9);  // at rest
+  EXPECT_TRUE(w.bonds().breaks.empty());
 }
 
 TEST(Bonds, MadeBetweenListBuildsActAtTheNextStep) {
@@ -143,12 +144,12 @@ TEST(Bonds, MadeBetweenListBuildsActAtTheNextStep) {
   ASSERT_EQ(w.make_bonds(0, 2, 1), 1u);
   w.advance();
   ASSERT_EQ(w.make_bonds(2, 4, 1), 1u);
-  w.discs.vx[3] = 1e-3;  // opening
+  inside(w).discs.vx[3] = 1e-3;  // opening
   ASSERT_FALSE(w.contacts_stale());
   w.advance();
-  ASSERT_EQ(w.bonds.size(), 2u);
-  const std::size_t k = w.bonds.id_a[0] == 2 ? 0 : 1;
-  EXPECT_GT(w.bonds.fn[k], 0.0);  // the new bond pulls
+  ASSERT_EQ(w.bonds().size(), 2u);
+  const std::size_t k = w.bonds().id_a[0] == 2 ? 0 : 1;
+  EXPECT_GT(w.bonds().fn[k], 0.0);  // the new bond pulls
 }
 
 TEST(Bonds, OfTwoKinematicDiscsAreLeftAsTheyAre) {
@@ -157,9 +158,9 @@ TEST(Bonds, OfTwoKinematicDiscsAreLeftAsTheyAre) {
   ASSERT_EQ(w.make_bonds(0, 2, 1), 1u);
   w.edit_motion([&](MotionEdit& e) { e.disc(0, Motion::Kinematic); e.disc(1, Motion::Kinematic, 1e-3, 0); });
   for (int s = 0; s < 5000; ++s) w.advance();
-  ASSERT_EQ(w.bonds.size(), 1u);
-  EXPECT_EQ(w.bonds.fn[0], 0.0);
-  EXPECT_TRUE(w.bonds.breaks.empty());
+  ASSERT_EQ(w.bonds().size(), 1u);
+  EXPECT_EQ(w.bonds().fn[0], 0.0);
+  EXPECT_TRUE(w.bonds().breaks.empty());
 }
 
 TEST(Bonds, AreMadeByTheRuleAndSurviveReordering) {
@@ -167,22 +168,22 @@ TEST(Bonds, AreMadeByTheRuleAndSurviveReordering) {
   Material rock = bonding(1, 1), sand;
   sand.name = "sand";
   World w = bonded_world({{0, 0}, {1, 0}, {2.04, 0}, {10, 0}, {0, 1}}, rock);
-  w.materials.list.push_back(sand);
-  w.discs.material[4] = 1;
+  inside(w).materials.list.push_back(sand);
+  inside(w).discs.material[4] = 1;
   // Gap 0.04 < bond_gap 0.05: bonded; the far disc and the sand disc are not.
   EXPECT_EQ(w.make_bonds(0, 5, 1), 2u);
   std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
-  for (std::size_t k = 0; k < w.bonds.size(); ++k) pairs.emplace_back(w.bonds.id_a[k], w.bonds.id_b[k]);
+  for (std::size_t k = 0; k < w.bonds().size(); ++k) pairs.emplace_back(w.bonds().id_a[k], w.bonds().id_b[k]);
   EXPECT_EQ(pairs, (std::vector<std::pair<std::int64_t, std::int64_t>>{{0, 1}, {1, 2}}));
   // Re-ordered and compacted discs: the bonds follow the ids.
   std::vector<std::uint8_t> keep = {1, 1, 1, 0, 1};
-  w.discs.compact(keep);
+  inside(w).discs.compact(keep);
   std::vector<std::uint32_t> order = {3, 2, 1, 0};
-  w.discs.permute(order);
+  inside(w).discs.permute(order);
   w.rebuild_contacts(false);
-  for (std::size_t k = 0; k < w.bonds.size(); ++k) {
-    EXPECT_EQ(w.discs.id[w.bonds.a[k]], w.bonds.id_a[k]);
-    EXPECT_EQ(w.discs.id[w.bonds.b[k]], w.bonds.id_b[k]);
+  for (std::size_t k = 0; k < w.bonds().size(); ++k) {
+    EXPECT_EQ(w.discs().id[w.bonds().a[k]], w.bonds().id_a[k]);
+    EXPECT_EQ(w.discs().id[w.bonds().b[k]], w.bonds().id_b[k]);
   }
 }
 
@@ -196,11 +197,11 @@ TEST(Bonds, StrengthScatterIsSeededByTheIdsAlone) {
   b.make_bonds(20, 40, 7);  // in two goes, the other half first
   b.make_bonds(0, 20, 7);
   c.make_bonds(0, 40, 8);
-  ASSERT_EQ(a.bonds.size(), 39u);
-  ASSERT_EQ(b.bonds.size(), 39u);
+  ASSERT_EQ(a.bonds().size(), 39u);
+  ASSERT_EQ(b.bonds().size(), 39u);
   auto strength_of = [](const World& w, std::int64_t id) {
-    for (std::size_t k = 0; k < w.bonds.size(); ++k)
-      if (w.bonds.id_a[k] == id) return w.bonds.tensile[k];
+    for (std::size_t k = 0; k < w.bonds().size(); ++k)
+      if (w.bonds().id_a[k] == id) return w.bonds().tensile[k];
     return -1.0;
   };
   double mean = 0, var = 0, differ = 0;
@@ -230,34 +231,34 @@ TEST(Weakening, ASlidingContactFollowsItsCurve) {
   // step (a pair of two kinematic discs has no contact: its force would act on nothing).
   w.edit_motion([&](MotionEdit& e) { e.disc(0, Motion::Kinematic); });
   const double omega = 0.02;
-  w.discs.omega[1] = omega;
-  w.hooks.add(Stage::AfterIntegration, "hold", [&](World& world) {
-    world.discs.x[1] = 0; world.discs.y[1] = 0.999;
-    world.discs.vx[1] = world.discs.vy[1] = 0;
-    world.discs.omega[1] = omega;
+  inside(w).discs.omega[1] = omega;
+  w.hooks().add(Stage::AfterIntegration, "hold", [&](World& world) {
+    inside(world).discs.x[1] = 0; inside(world).discs.y[1] = 0.999;
+    inside(world).discs.vx[1] = inside(world).discs.vy[1] = 0;
+    inside(world).discs.omega[1] = omega;
   });
   std::vector<DiscForce> forces;
   orogen::testing::record_step_forces(w, forces);
   const double fn = kKn * 0.001;
   int sliding = 0;
   for (int s = 0; s < 12000; ++s) {
-    const double slip_before = w.discs.slip[1];
+    const double slip_before = w.discs().slip[1];
     w.advance();
     // Torque on the spun disc: -r F_t, with F_t at the limit once the spring is loaded.
     const double ft = -forces[1].torque / 0.5;
     const double mu = m.friction_at(slip_before);
-    if (w.discs.slip[1] == slip_before) continue;  // still loading the spring
+    if (w.discs().slip[1] == slip_before) continue;  // still loading the spring
     ++sliding;
     EXPECT_NEAR(std::fabs(ft), mu * fn, 1e-9) << "step " << s << ", slip " << slip_before;
     // Once on the limit it slides r omega dt each step (plus, while the friction falls, the
     // spring's give as its limit drops: (0.3 / 0.05) r omega dt F_n / k_s, 1.2% of it here).
     if (slip_before > 0) {
-      EXPECT_NEAR(w.discs.slip[1] - slip_before, 0.5 * omega * w.dt, 0.015 * 0.5 * omega * w.dt);
+      EXPECT_NEAR(w.discs().slip[1] - slip_before, 0.5 * omega * w.dt(), 0.015 * 0.5 * omega * w.dt());
     }
   }
   EXPECT_GT(sliding, 10000);
-  EXPECT_GT(w.discs.slip[1], m.weakening_distance);  // past the end: residual
-  EXPECT_EQ(w.discs.slip[0], w.discs.slip[1]);        // each disc of the contact took the slip
+  EXPECT_GT(w.discs().slip[1], m.weakening_distance);  // past the end: residual
+  EXPECT_EQ(w.discs().slip[0], w.discs().slip[1]);        // each disc of the contact took the slip
   EXPECT_DOUBLE_EQ(w.contact_friction(0, 1), 0.3);
 }
 
@@ -268,8 +269,8 @@ TEST(Weakening, AContactOfTwoMaterialsSlidesAtTheWeakerFriction) {
   weak.name = "weak";
   weak.friction = weak.friction_residual = 0.1;
   World w = bonded_world({{0, 0}, {1, 0}, {2, 0}}, strong);
-  w.materials.list.push_back(weak);
-  w.discs.material[2] = 1;
+  inside(w).materials.list.push_back(weak);
+  inside(w).discs.material[2] = 1;
   EXPECT_DOUBLE_EQ(w.contact_friction(0, 1), 0.6);
   EXPECT_DOUBLE_EQ(w.contact_friction(1, 2), 0.1);
 }

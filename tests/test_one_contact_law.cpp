@@ -13,6 +13,7 @@
 #include "contact/normal_laws.hpp"
 #include "util/random.hpp"
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -76,39 +77,39 @@ TEST(OneContactLaw, BlockKernelMatchesOnePairThroughTheKernel) {
 // and a rough backstop moving in: pairs and walls colliding, sticking and slipping.
 World box(std::size_t normal_law) {
   World w;
-  w.law.normal_force = normal_law;
-  w.law.kn = 2e4;
-  w.law.ks = 2e4 * 2 / 7;
-  w.law.mu = 0.5;
-  w.law.tangential_damping_ratio = 0.3;
+  inside(w).law.normal_force = normal_law;
+  inside(w).law.kn = 2e4;
+  inside(w).law.ks = 2e4 * 2 / 7;
+  inside(w).law.mu = 0.5;
+  inside(w).law.tangential_damping_ratio = 0.3;
   if (normal_law != 0) {  // the restitution calibration is the linear no-pull law's
-    w.law.damping = NormalDamping::PerMass;
-    w.law.damping_rate = 150;
+    inside(w).law.damping = NormalDamping::PerMass;
+    inside(w).law.damping_rate = 150;
   }
-  w.neighbors.skin = 0.3;
+  inside(w).neighbors.skin = 0.3;
   const double width = 40;
   Wall belt = testing::wall(width, 0, width, 30, WallFriction::Traction, 0.4);
   belt.traction_gamma = 5;
   belt.surface_speed = 0.5;
   Wall backstop = testing::wall(8, 0.5, 8, 30, WallFriction::Rough, 0.6);
   backstop.vx = 0.3;
-  w.walls = {testing::wall(0, 0, width, 0, WallFriction::Rough, 0.5), testing::wall(0, 0, 0, 30), belt, backstop};
+  inside(w).walls = {testing::wall(0, 0, width, 0, WallFriction::Rough, 0.5), testing::wall(0, 0, 0, 30), belt, backstop};
   Random rng(7);
   for (int row = 0; row < 8; ++row)
     for (int col = 0; col < 30; ++col) {
       const auto i = w.add_disc(9.0 + col * 1.0, 0.6 + row * 1.05, 0.5 * rng.uniform(0.7, 1.0));
-      w.discs.vx[i] = rng.uniform(-1, 1);
-      w.discs.vy[i] = rng.uniform(-1, 0);
+      inside(w).discs.vx[i] = rng.uniform(-1, 1);
+      inside(w).discs.vy[i] = rng.uniform(-1, 0);
     }
-  w.dt = 0.5 * w.stable_dt();
+  inside(w).dt = 0.5 * w.stable_dt();
   return w;
 }
 
 // The per-disc forces the force stages sum, rebuilt from the contact output's rows in the
 // stages' order: pairs chunk by chunk, even chunks then odd ones, then walls in wall order.
 std::vector<DiscForce> forces_from_output(const World& w, const ContactList& c) {
-  const auto& L = w.neighbors;
-  const auto& d = w.discs;
+  const auto& L = w.neighbors();
+  const auto& d = w.discs();
   std::vector<std::ptrdiff_t> row(L.size(), -1);
   std::size_t r = 0;
   for (std::size_t p = 0; p < L.size(); ++p)
@@ -141,7 +142,7 @@ TEST(OneContactLaw, ForceStagesAndContactOutputGiveTheSameBits) {
       if (s % 150 != 0) continue;
       // A current list, so that the output and the next step's stages see the same contacts.
       w.rebuild_contacts(false);
-      w.moved = 0;
+      inside(w).moved = 0;
       const ContactList c = measure_contact_forces(w);
       World next = w;
       std::vector<DiscForce> forces;
@@ -162,7 +163,7 @@ TEST(OneContactLaw, ForceStagesAndContactOutputGiveTheSameBits) {
         ++r;
       }
       pairs += r;
-      const auto& wc = next.contacts.walls;
+      const auto& wc = next.contacts().walls;
       for (std::size_t k = 0; k < wc.size(); ++k) {
         if (!wc.touching[k]) continue;
         ASSERT_LT(r, c.size());
@@ -187,13 +188,13 @@ TEST(OneContactLaw, BiaxialElasticWallForceIsTheNormalForceWithoutDashpot) {
   World w = box(0);
   for (int s = 0; s < 2000; ++s) w.advance();
   w.rebuild_contacts(false);
-  w.moved = 0;
+  inside(w).moved = 0;
   // At rest and with walls at rest the dashpots give nothing: the output's normal force is
   // the elastic one.
-  for (std::size_t i = 0; i < w.discs.size(); ++i) w.discs.vx[i] = w.discs.vy[i] = w.discs.omega[i] = 0;
-  for (auto& wall : w.walls) wall.vx = wall.vy = wall.surface_speed = 0;
+  for (std::size_t i = 0; i < inside(w).discs.size(); ++i) inside(w).discs.vx[i] = inside(w).discs.vy[i] = inside(w).discs.omega[i] = 0;
+  for (auto& wall : inside(w).walls) wall.vx = wall.vy = wall.surface_speed = 0;
   const ContactList c = measure_contact_forces(w);
-  std::vector<WallForce> expected(w.walls.size());
+  std::vector<WallForce> expected(w.walls().size());
   for (std::size_t r = 0; r < c.size(); ++r) {
     if (!c.is_wall[r]) continue;
     auto& e = expected[static_cast<std::size_t>(c.id_a[r])];  // every wall enabled: row = index

@@ -41,15 +41,15 @@ ReposeResult run_repose(const std::string& packing, double mu, const std::string
   exp->setup(w);
   // Held discs, by id, with their positions: they must not move.
   std::vector<std::pair<std::int64_t, double>> held;
-  for (std::size_t i = 0; i < w.discs.size(); ++i)
-    if (!w.discs.is_dynamic(i)) held.emplace_back(w.discs.id[i], w.discs.x[i] + 1e3 * w.discs.y[i]);
+  for (std::size_t i = 0; i < w.discs().size(); ++i)
+    if (!w.discs().is_dynamic(i)) held.emplace_back(w.discs().id[i], w.discs().x[i] + 1e3 * w.discs().y[i]);
   EXPECT_FALSE(held.empty());
   while (exp->advance(w)) {
   }
-  ReposeResult r{exp->summary(w), w.discs.size(), 0};
+  ReposeResult r{exp->summary(w), w.discs().size(), 0};
   for (auto [id, key] : held)
-    for (std::size_t i = 0; i < w.discs.size(); ++i)
-      if (w.discs.id[i] == id && w.discs.x[i] + 1e3 * w.discs.y[i] != key) ++r.held_moved;
+    for (std::size_t i = 0; i < w.discs().size(); ++i)
+      if (w.discs().id[i] == id && w.discs().x[i] + 1e3 * w.discs().y[i] != key) ++r.held_moved;
   return r;
 }
 

@@ -34,17 +34,17 @@ TEST(Scripted, StartsEmptyAndEndsAtItsDuration) {
   World w;
   apply_engine_config(c, w);
   exp->setup(w);
-  EXPECT_EQ(w.discs.size(), 0u);
-  EXPECT_TRUE(w.walls.empty());
+  EXPECT_EQ(w.discs().size(), 0u);
+  EXPECT_TRUE(w.walls().empty());
   w.add_disc(0.0, 5.0, 0.5);  // what a setup function does: one disc falling freely
   ASSERT_EQ(exp->output_interval().value(), 0.5 / 4);
   std::uint64_t steps = 0;
   while (exp->advance(w)) ++steps;
-  EXPECT_GE(w.time, 0.5 - 1e-9);
-  EXPECT_LT(w.time, 0.5 + w.dt);
+  EXPECT_GE(w.time(), 0.5 - 1e-9);
+  EXPECT_LT(w.time(), 0.5 + w.dt());
   EXPECT_FALSE(exp->advance(w));  // done stays done, without a step
-  EXPECT_EQ(w.step, steps + 1);
-  EXPECT_LT(w.discs.vy[0], 0.0);  // the engine's gravity acts
+  EXPECT_EQ(w.step(), steps + 1);
+  EXPECT_LT(w.discs().vy[0], 0.0);  // the engine's gravity acts
   const auto row = exp->measure(w);
   ASSERT_EQ(row.size(), exp->columns().size());
   EXPECT_EQ(row[2], 1.0);  // n_discs

@@ -41,7 +41,7 @@ std::vector<SummaryValue> run_singly(double mu_b) {
   const double interval = exp->output_interval().value();
   double next = 0;
   while (exp->advance(w))
-    if (w.time >= next) { exp->after_output(w); next += interval; }
+    if (w.time() >= next) { exp->after_output(w); next += interval; }
   EXPECT_NEAR(backstop0 - w.wall(kBoxRight).ax, 3 * 8.0, 0.01);
   return exp->summary(w);
 }
@@ -71,15 +71,15 @@ TEST(SinglyVergent, AnInitialSlopeCutsAWedgeOfThatSurface) {
   exp->setup(w);
   const double x_back = w.wall(kBoxRight).ax, slope = std::tan(20.0 * std::numbers::pi / 180);
   double top_near_back = 0, lowest_x = x_back;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) {
-    EXPECT_LE(w.discs.y[i], 8.0 - slope * (x_back - w.discs.x[i]) + 1e-9) << "disc " << i;
-    if (x_back - w.discs.x[i] < 3) top_near_back = std::max(top_near_back, w.discs.y[i]);
-    lowest_x = std::min(lowest_x, w.discs.x[i]);
+  for (std::size_t i = 0; i < w.discs().size(); ++i) {
+    EXPECT_LE(w.discs().y[i], 8.0 - slope * (x_back - w.discs().x[i]) + 1e-9) << "disc " << i;
+    if (x_back - w.discs().x[i] < 3) top_near_back = std::max(top_near_back, w.discs().y[i]);
+    lowest_x = std::min(lowest_x, w.discs().x[i]);
   }
   EXPECT_GT(top_near_back, 8.0 - slope * 3 - 1.0);  // the wedge reaches up to its surface
   EXPECT_NEAR(x_back - lowest_x, 8.0 / slope, 2.0);  // and runs out where the surface meets the base
   // Depths below the new surface (to the centre: the top discs lie a radius down).
-  EXPECT_LT(*std::min_element(w.discs.depth0.begin(), w.discs.depth0.end()), 0.5);
+  EXPECT_LT(*std::min_element(w.discs().depth0.begin(), w.discs().depth0.end()), 0.5);
 }
 
 TEST(SinglyVergent, RefusesAShorteningThatReachesTheFarWall) {

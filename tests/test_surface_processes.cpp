@@ -35,16 +35,16 @@ TEST(SurfaceProcesses, ADiffusedTowerErodesAndItsFootGetsDepositsThatOverlapNoth
   spec.diffusivity = 2.0;
   spec.deposition = true;
   SurfaceProcesses surface(spec, {0.4, 0.45, 0.5}, 7);
-  const std::size_t before = w.discs.size();
+  const std::size_t before = w.discs().size();
   surface.update(w, 0.0, 40.0, 1.0);
   const AreaLedger& l = surface.ledger();
   EXPECT_GT(l.eroded[0], 2.0);
   EXPECT_GT(l.deposited, 2.0);
   EXPECT_NEAR(disc_area(w), area_before - l.eroded_total() + l.deposited, 1e-9);
-  for (const auto& r : w.removals) EXPECT_EQ(r.reason, RemovalReason::ErodedHillslope);
-  EXPECT_GT(w.removals.size(), 2u);
+  for (const auto& r : w.removals()) EXPECT_EQ(r.reason, RemovalReason::ErodedHillslope);
+  EXPECT_GT(w.removals().size(), 2u);
   // The deposits: at the tower's foot, touching nothing and above the base.
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   std::size_t laid = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
     if (std::isnan(surface.deposition_time(d.id[i]))) continue;

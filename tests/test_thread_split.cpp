@@ -8,6 +8,7 @@
 #include "contact/thread_split.hpp"
 #include "util/random.hpp"
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -16,13 +17,13 @@ namespace {
 // list has many chunks, with its neighbour list built (and the discs sorted) by a few steps.
 World mixed_heap() {
   World w;
-  w.law.kn = 1e4;
-  w.law.ks = 5e3;
-  w.law.mu = 0.5;
+  inside(w).law.kn = 1e4;
+  inside(w).law.ks = 5e3;
+  inside(w).law.mu = 0.5;
   const double width = 120, height = 12;
-  w.walls = {testing::wall(0, 0, width, 0, WallFriction::Rough, 0.5),
+  w.set_walls({testing::wall(0, 0, width, 0, WallFriction::Rough, 0.5),
              testing::wall(0, 0, 0, height, WallFriction::Rough, 0.5),
-             testing::wall(width, 0, width, height, WallFriction::Rough, 0.5)};
+             testing::wall(width, 0, width, height, WallFriction::Rough, 0.5)});
   Random rng(3);
   for (int row = 0; row < 5; ++row)
     for (int col = 0; col < 38; ++col) {
@@ -33,12 +34,12 @@ World mixed_heap() {
         w.add_cluster(idx);
       } else {
         const auto i = w.add_disc(x, y + 0.4, 0.5 * rng.uniform(0.7, 1.0));
-        w.discs.vx[i] = rng.uniform(-0.5, 0.5);
+        inside(w).discs.vx[i] = rng.uniform(-0.5, 0.5);
       }
     }
-  update_cluster_discs(w.clusters, w.discs);
-  w.dt = 0.5 * w.stable_dt();
-  w.sort_every = 1;  // every build sorts, so the list always carries its chunks' first discs
+  update_cluster_discs(inside(w).clusters, inside(w).discs);
+  inside(w).dt = 0.5 * w.stable_dt();
+  inside(w).sort_every = 1;  // every build sorts, so the list always carries its chunks' first discs
   for (int s = 0; s < 400; ++s) w.advance();
   return w;
 }
@@ -50,17 +51,17 @@ std::vector<double> step_with(World w, const ThreadSplit& split) {
   testing::record_step_forces(w, forces);
   w.step_stages(&split);
   std::vector<double> state;
-  for (const auto* a : {&w.discs.x, &w.discs.y, &w.discs.vx, &w.discs.vy, &w.discs.omega, &w.discs.theta})
+  for (const auto* a : {&w.discs().x, &w.discs().y, &w.discs().vx, &w.discs().vy, &w.discs().omega, &w.discs().theta})
     state.insert(state.end(), a->begin(), a->end());
   for (const auto& f : forces) state.insert(state.end(), {f.fx, f.fy, f.torque});
-  state.insert(state.end(), w.contacts.pairs.xi.begin(), w.contacts.pairs.xi.end());
-  state.insert(state.end(), w.contacts.walls.xi.begin(), w.contacts.walls.xi.end());
+  state.insert(state.end(), w.contacts().pairs.xi.begin(), w.contacts().pairs.xi.end());
+  state.insert(state.end(), w.contacts().walls.xi.begin(), w.contacts().walls.xi.end());
   return state;
 }
 
 TEST(ThreadSplit, SharesCoverEverythingOnceAndFollowTheChunks) {
   const World w = mixed_heap();
-  const auto& L = w.neighbors;
+  const auto& L = w.neighbors();
   const auto chunks = static_cast<std::ptrdiff_t>(L.chunk_start.size()) - 1;
   ASSERT_GT(chunks, 8);
   ASSERT_EQ(L.chunk_disc.size(), L.chunk_start.size());  // the first build sorted the discs
@@ -68,14 +69,14 @@ TEST(ThreadSplit, SharesCoverEverythingOnceAndFollowTheChunks) {
   for (std::ptrdiff_t k = 0; k < chunks; ++k)
     largest_chunk = std::max<std::size_t>(largest_chunk, L.chunk_start[k + 1] - L.chunk_start[k]);
   for (int threads : {1, 2, 3, 4}) {
-    const ThreadSplit s = split_threads(L, w.discs, w.clusters, threads);
+    const ThreadSplit s = split_threads(L, w.discs(), w.clusters(), threads);
     ASSERT_EQ(s.threads(), threads);
     EXPECT_EQ(s.chunk.front(), 0);
     EXPECT_EQ(s.chunk.back(), chunks);
     EXPECT_EQ(s.disc.front(), 0);
-    EXPECT_EQ(s.disc.back(), static_cast<std::ptrdiff_t>(w.discs.size()));
+    EXPECT_EQ(s.disc.back(), static_cast<std::ptrdiff_t>(w.discs().size()));
     EXPECT_EQ(s.body.front(), 0);
-    EXPECT_EQ(s.body.back(), static_cast<std::ptrdiff_t>(w.clusters.size()));
+    EXPECT_EQ(s.body.back(), static_cast<std::ptrdiff_t>(w.clusters().size()));
     for (int t = 0; t < threads; ++t) {
       EXPECT_LE(s.chunk[t], s.chunk[t + 1]);
       EXPECT_LE(s.disc[t], s.disc[t + 1]);
@@ -91,13 +92,13 @@ TEST(ThreadSplit, SharesCoverEverythingOnceAndFollowTheChunks) {
 
 TEST(ThreadSplit, NoSplitChangesTheResult) {
   const World w = mixed_heap();
-  const auto chunks = static_cast<std::ptrdiff_t>(w.neighbors.chunk_start.size()) - 1;
-  const auto n = static_cast<std::ptrdiff_t>(w.discs.size());
-  const auto nc = static_cast<std::ptrdiff_t>(w.clusters.size());
-  const std::vector<double> one = step_with(w, split_threads(w.neighbors, w.discs, w.clusters, 1));
+  const auto chunks = static_cast<std::ptrdiff_t>(w.neighbors().chunk_start.size()) - 1;
+  const auto n = static_cast<std::ptrdiff_t>(w.discs().size());
+  const auto nc = static_cast<std::ptrdiff_t>(w.clusters().size());
+  const std::vector<double> one = step_with(w, split_threads(w.neighbors(), w.discs(), w.clusters(), 1));
   const std::vector<ThreadSplit> others = {
-      split_threads(w.neighbors, w.discs, w.clusters, 2),
-      split_threads(w.neighbors, w.discs, w.clusters, 3),
+      split_threads(w.neighbors(), w.discs(), w.clusters(), 2),
+      split_threads(w.neighbors(), w.discs(), w.clusters(), 3),
       {{0, 1, chunks}, {0, n - 5, n}, {0, 1, nc}},        // lopsided, and discs cut far from chunks
       {{0, chunks - 1, chunks}, {0, 7, n}, {0, nc - 2, nc}},
   };
@@ -115,24 +116,24 @@ TEST(ThreadSplit, ForceSumsAreZeroAfterEveryStep) {
   World w = mixed_heap();
   w.edit_motion([&](MotionEdit& e) {
     e.cluster(0, Motion::Kinematic, 0.01, 0);
-    for (std::size_t i = 0; i < w.discs.size(); ++i)
-      if (w.discs.cluster[i] < 0) { e.disc(i, Motion::Kinematic, -0.01, 0); break; }
+    for (std::size_t i = 0; i < w.discs().size(); ++i)
+      if (w.discs().cluster[i] < 0) { e.disc(i, Motion::Kinematic, -0.01, 0); break; }
   });
-  const auto n = static_cast<std::ptrdiff_t>(w.discs.size());
-  const auto nc = static_cast<std::ptrdiff_t>(w.clusters.size());
+  const auto n = static_cast<std::ptrdiff_t>(w.discs().size());
+  const auto nc = static_cast<std::ptrdiff_t>(w.clusters().size());
   w.advance();  // a list for the new motion
-  const auto chunks = static_cast<std::ptrdiff_t>(w.neighbors.chunk_start.size()) - 1;
+  const auto chunks = static_cast<std::ptrdiff_t>(w.neighbors().chunk_start.size()) - 1;
   std::vector<DiscForce> forces;
   testing::record_step_forces(w, forces);
-  for (const ThreadSplit& split : {split_threads(w.neighbors, w.discs, w.clusters, 1),
-                                   split_threads(w.neighbors, w.discs, w.clusters, 2),
+  for (const ThreadSplit& split : {split_threads(w.neighbors(), w.discs(), w.clusters(), 1),
+                                   split_threads(w.neighbors(), w.discs(), w.clusters(), 2),
                                    ThreadSplit{{0, 1, chunks}, {0, n - 5, n}, {0, 1, nc}}}) {
     w.step_stages(&split);
     std::size_t pushed = 0;
     for (const auto& f : forces) pushed += f.fx != 0 || f.fy != 0;
     EXPECT_GT(pushed, 0u);  // the sums were there during the step (the heap is still falling)
-    for (std::size_t i = 0; i < w.discs.size(); ++i) {
-      const DiscForce& f = w.scratch.forces[i];
+    for (std::size_t i = 0; i < w.discs().size(); ++i) {
+      const DiscForce& f = w.scratch().forces[i];
       ASSERT_TRUE(f.fx == 0 && f.fy == 0 && f.torque == 0) << "disc " << i << " of " << n;
     }
   }

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "world_fixtures.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -18,14 +19,14 @@ constexpr double kPlateSpeed = 0.025;
 
 World plate_world(double gamma, double mu) {
   World w;
-  w.law.kn = 1e4;
-  w.law.ks = 5e3;
-  w.law.mu = 0.3;
+  inside(w).law.kn = 1e4;
+  inside(w).law.ks = 5e3;
+  inside(w).law.mu = 0.3;
   Wall plate = testing::wall(-100, 0, 100, 0, WallFriction::Traction, mu);
   plate.traction_gamma = gamma;
   plate.surface_speed = kPlateSpeed;
-  w.walls = {plate};
-  w.neighbors.skin = 0.3;
+  inside(w).walls = {plate};
+  inside(w).neighbors.skin = 0.3;
   return w;
 }
 
@@ -39,7 +40,7 @@ std::array<Velocity, 2> last_two(World& w, int steps, bool body) {
   for (int s = 0; s < steps; ++s) {
     w.advance();
     m[0] = m[1];
-    m[1] = body ? Velocity{w.clusters.vx[0], w.clusters.omega[0]} : Velocity{w.discs.vx[0], w.discs.omega[0]};
+    m[1] = body ? Velocity{w.clusters().vx[0], w.clusters().omega[0]} : Velocity{w.discs().vx[0], w.discs().omega[0]};
   }
   return m;
 }
@@ -53,7 +54,7 @@ TEST(TractionBase, AFreeDiscRollsWithThePlateAtAThirdOfItsSpeed) {
   for (double gamma : {10.0, 1e4, 1e8}) {
     World w = plate_world(gamma, 0.2);
     w.add_disc(0, 0.5, 0.5);
-    w.dt = 0.5 * w.stable_dt();
+    inside(w).dt = 0.5 * w.stable_dt();
     const auto m = last_two(w, 20000, false);
     for (const auto& s : m) {
       EXPECT_NEAR(s.vx, kPlateSpeed / 3, 1e-6 * kPlateSpeed) << "gamma " << gamma;
@@ -74,7 +75,7 @@ TEST(TractionBase, ABodyOnTwoOfItsDiscsMovesWithThePlate) {
     const std::size_t a = w.add_disc(-0.4, 0.4, 0.4), b = w.add_disc(0.4, 0.4, 0.4), c = w.add_disc(0, 1.0, 0.4);
     const std::array<std::size_t, 3> members{a, b, c};
     w.add_cluster(members);
-    w.dt = 0.5 * w.stable_dt();
+    inside(w).dt = 0.5 * w.stable_dt();
     const auto m = last_two(w, 20000, true);
     for (const auto& s : m) {
       EXPECT_NEAR(s.vx, kPlateSpeed, 1e-9) << "mu " << mu;
@@ -92,21 +93,21 @@ TEST(TractionBase, ABodyOnTwoOfItsDiscsMovesWithThePlate) {
 // plate's (both from the overlaps of the linear law; at rest no damping acts).
 double transmitted_friction(WallFriction law, double mu, double dt_fraction) {
   World w = plate_world(1e4, mu);
-  w.walls[0].friction = law;
+  inside(w).walls[0].friction = law;
   const double r = 0.4;
-  w.walls.push_back(testing::wall(0.8, -1, 0.8, 3));  // the stop, touching disc b's right side
+  inside(w).walls.push_back(testing::wall(0.8, -1, 0.8, 3));  // the stop, touching disc b's right side
   const std::size_t a = w.add_disc(-0.4, r, r), b = w.add_disc(0.4, r, r), c = w.add_disc(0, 1.0, r);
   const std::array<std::size_t, 3> members{a, b, c};
   w.add_cluster(members);
-  w.dt = dt_fraction * w.stable_dt();
+  inside(w).dt = dt_fraction * w.stable_dt();
   const double load = 200.0;
-  w.hooks.add(Stage::AfterForces, "test.load", [c, load](World& world) { world.scratch.forces[c].fy -= load; });
+  w.hooks().add(Stage::AfterForces, "test.load", [c, load](World& world) { inside(world).scratch.forces[c].fy -= load; });
   for (int s = 0; s < 40000; ++s) w.advance();
-  const auto& d = w.discs;
-  EXPECT_NEAR(w.clusters.vx[0], 0.0, 1e-6);
-  EXPECT_NEAR(w.clusters.vy[0], 0.0, 1e-6);
-  const double stop = w.law.kn * (r - (0.8 - d.x[b]));
-  const double plate = w.law.kn * (r - d.y[a]) + w.law.kn * (r - d.y[b]);
+  const auto& d = w.discs();
+  EXPECT_NEAR(w.clusters().vx[0], 0.0, 1e-6);
+  EXPECT_NEAR(w.clusters().vy[0], 0.0, 1e-6);
+  const double stop = w.law().kn * (r - (0.8 - d.x[b]));
+  const double plate = w.law().kn * (r - d.y[a]) + w.law().kn * (r - d.y[b]);
   return stop / plate;
 }
 

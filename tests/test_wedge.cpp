@@ -14,6 +14,7 @@
 #include "config/config.hpp"
 #include "experiments/experiment.hpp"
 #include "experiments/wedge_experiment.hpp"
+#include "world_internals.hpp"
 
 namespace orogen {
 namespace {
@@ -67,13 +68,13 @@ TEST(Wedge, LayerStartsClearOfTheEndWallAndStaysQuiet) {
   const World& w = r.w;
   const double x_end = 4 * kH0;
   double right = -1e9;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) right = std::max(right, w.discs.x[i] + w.discs.radius[i]);
+  for (std::size_t i = 0; i < w.discs().size(); ++i) right = std::max(right, w.discs().x[i] + w.discs().radius[i]);
   EXPECT_LE(right, x_end);
   EXPECT_GT(right, x_end - 1.5);  // and reaches it
   for (int s = 0; s < 500; ++s) ASSERT_TRUE(r.exp->advance(r.w));
   double fastest = 0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i)
-    fastest = std::max(fastest, std::hypot(w.discs.vx[i], w.discs.vy[i]));
+  for (std::size_t i = 0; i < w.discs().size(); ++i)
+    fastest = std::max(fastest, std::hypot(w.discs().vx[i], w.discs().vy[i]));
   // The plate moves at 0.025 and a surface cluster that tumbles off its perch reaches ~0.3; a
   // particle blasted out of the wall moved at 2.6 here (15 at h0 = 20).
   EXPECT_LT(fastest, 1.0);
@@ -86,16 +87,16 @@ TEST(Wedge, FarRetroLayerRestsUntilTheRetroFrontApproaches) {
   World& w = r.w;
   const double edge = 3 * kH0;
   int far = 0, near = 0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) {
-    const auto k = w.discs.cluster[i];
-    const double x = k >= 0 ? w.clusters.x[static_cast<std::size_t>(k)] : w.discs.x[i];
+  for (std::size_t i = 0; i < w.discs().size(); ++i) {
+    const auto k = w.discs().cluster[i];
+    const double x = k >= 0 ? w.clusters().x[static_cast<std::size_t>(k)] : w.discs().x[i];
     if (x > edge + 0.01) {
       ++far;
-      EXPECT_FALSE(w.discs.is_dynamic(i));
-      EXPECT_EQ(w.discs.vx[i], 0.0);
+      EXPECT_FALSE(w.discs().is_dynamic(i));
+      EXPECT_EQ(w.discs().vx[i], 0.0);
     } else if (x > 0 && x < edge - 0.01) {
       ++near;
-      EXPECT_TRUE(w.discs.is_dynamic(i));
+      EXPECT_TRUE(w.discs().is_dynamic(i));
     }
   }
   EXPECT_GT(far, 200);  // 7 h0 of layer at rest, 3 h0 dynamic (about 110 discs)
@@ -112,11 +113,11 @@ TEST(Wedge, ErosionRemovesExactlyTheParticlesAboveTheThreshold) {
   WedgeRun r({"wedge.erosion_height=2", "wedge.erosion_every=1", "wedge.s_end=1"});
   World& w = r.w;
   const double limit = 2 * kH0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) ASSERT_LT(w.discs.y[i], limit - 2);  // the layer stays
-  const std::size_t n0 = w.discs.size();
+  for (std::size_t i = 0; i < w.discs().size(); ++i) ASSERT_LT(w.discs().y[i], limit - 2);  // the layer stays
+  const std::size_t n0 = w.discs().size();
   // Free discs just above and just below the threshold.
-  const auto above = w.discs.id[w.add_disc(2.0, limit + 0.3, 0.4)];
-  const auto below = w.discs.id[w.add_disc(4.0, limit - 0.3, 0.4)];
+  const auto above = w.discs().id[w.add_disc(2.0, limit + 0.3, 0.4)];
+  const auto below = w.discs().id[w.add_disc(4.0, limit - 0.3, 0.4)];
   // A cluster whose mean disc elevation is above the threshold but its centre of mass below
   // (a big disc low, two small ones high): eroded, by the mean.
   std::vector<std::int64_t> high_mean;
@@ -125,8 +126,8 @@ TEST(Wedge, ErosionRemovesExactlyTheParticlesAboveTheThreshold) {
                       c = w.add_disc(6.35, limit + 0.4, 0.35);
     const std::size_t idx[] = {a, b, c};
     const auto k = w.add_cluster(idx);
-    ASSERT_LT(w.clusters.y[k], limit);
-    high_mean = {w.discs.id[a], w.discs.id[b], w.discs.id[c]};
+    ASSERT_LT(w.clusters().y[k], limit);
+    high_mean = {w.discs().id[a], w.discs().id[b], w.discs().id[c]};
   }
   // The other way round: centre of mass above, mean below: kept.
   std::vector<std::int64_t> low_mean;
@@ -135,33 +136,33 @@ TEST(Wedge, ErosionRemovesExactlyTheParticlesAboveTheThreshold) {
                       c = w.add_disc(9.35, limit - 0.4, 0.35);
     const std::size_t idx[] = {a, b, c};
     const auto k = w.add_cluster(idx);
-    ASSERT_GT(w.clusters.y[k], limit);
-    low_mean = {w.discs.id[a], w.discs.id[b], w.discs.id[c]};
+    ASSERT_GT(w.clusters().y[k], limit);
+    low_mean = {w.discs().id[a], w.discs().id[b], w.discs().id[c]};
   }
-  const auto ids_before_step = w.next_disc_id;
+  const auto ids_before_step = w.next_disc_id();
   ASSERT_TRUE(r.exp->advance(w));
-  const auto stamped = static_cast<std::size_t>(w.next_disc_id - ids_before_step);  // inflow, if any
+  const auto stamped = static_cast<std::size_t>(w.next_disc_id() - ids_before_step);  // inflow, if any
 
   std::set<std::int64_t> expected = {above};
   expected.insert(high_mean.begin(), high_mean.end());
   std::set<std::int64_t> removed;
-  for (const auto& rec : w.removals) {
+  for (const auto& rec : w.removals()) {
     EXPECT_EQ(rec.reason, RemovalReason::Eroded);
     removed.insert(rec.id);
   }
-  EXPECT_EQ(w.removals.size(), 4u);
+  EXPECT_EQ(w.removals().size(), 4u);
   EXPECT_EQ(removed, expected);
   // The logged position is where the disc was (it fell for one step at most).
-  for (const auto& rec : w.removals)
+  for (const auto& rec : w.removals())
     if (rec.id == above) {
       EXPECT_NEAR(rec.x, 2.0, 1e-6);
       EXPECT_NEAR(rec.y, limit + 0.3, 1e-4);
       EXPECT_EQ(rec.cluster_id, -1);
     }
   // Everything else is still there.
-  EXPECT_EQ(w.discs.size(), n0 + 8 - 4 + stamped);
-  EXPECT_LT(index_of_id(w.discs, below), w.discs.size());
-  for (auto id : low_mean) EXPECT_LT(index_of_id(w.discs, id), w.discs.size());
+  EXPECT_EQ(w.discs().size(), n0 + 8 - 4 + stamped);
+  EXPECT_LT(index_of_id(w.discs(), below), w.discs().size());
+  for (auto id : low_mean) EXPECT_LT(index_of_id(w.discs(), id), w.discs().size());
   EXPECT_EQ(r.measured("n_eroded"), 4);
   EXPECT_EQ(r.measured("n_left"), 0);
 }
@@ -176,62 +177,62 @@ TEST(Wedge, MassIsConservedWithInflowAndErosion) {
               "wedge.outputs=8"});
   World& w = r.w;
   const double interval = *r.exp->output_interval();
-  const std::size_t n_initial = w.discs.size();
+  const std::size_t n_initial = w.discs().size();
   ASSERT_EQ(r.measured("n_entered"), static_cast<double>(n_initial));
   int outputs = 0, stamps = 0;
   double next_output = interval;
   while (true) {
-    const std::size_t before = w.discs.size();
-    const auto next_id = w.next_disc_id;
-    const auto next_cluster = w.clusters.size();
+    const std::size_t before = w.discs().size();
+    const auto next_id = w.next_disc_id();
+    const auto next_cluster = w.clusters().size();
     if (!r.exp->advance(w)) break;
-    if (w.discs.size() > before) {
+    if (w.discs().size() > before) {
       // A tile was stamped: fresh ids, kinematic at the plate speed with its clusters, left
       // of all the older discs and overlapping none of them.
       ++stamps;
       std::set<std::int64_t> ids;
       double gap = std::numeric_limits<double>::infinity();
-      for (std::size_t i = 0; i < w.discs.size(); ++i) {
-        if (w.discs.id[i] < next_id) continue;
-        ids.insert(w.discs.id[i]);
-        EXPECT_FALSE(w.discs.is_dynamic(i));
-        EXPECT_DOUBLE_EQ(w.discs.vx[i], kV);
-        EXPECT_EQ(w.discs.vy[i], 0.0);
-        for (std::size_t j = 0; j < w.discs.size(); ++j)
-          if (w.discs.id[j] < next_id)
-            gap = std::min(gap, std::hypot(w.discs.x[j] - w.discs.x[i], w.discs.y[j] - w.discs.y[i]) -
-                                    w.discs.radius[i] - w.discs.radius[j]);
+      for (std::size_t i = 0; i < w.discs().size(); ++i) {
+        if (w.discs().id[i] < next_id) continue;
+        ids.insert(w.discs().id[i]);
+        EXPECT_FALSE(w.discs().is_dynamic(i));
+        EXPECT_DOUBLE_EQ(w.discs().vx[i], kV);
+        EXPECT_EQ(w.discs().vy[i], 0.0);
+        for (std::size_t j = 0; j < w.discs().size(); ++j)
+          if (w.discs().id[j] < next_id)
+            gap = std::min(gap, std::hypot(w.discs().x[j] - w.discs().x[i], w.discs().y[j] - w.discs().y[i]) -
+                                    w.discs().radius[i] - w.discs().radius[j]);
       }
-      EXPECT_EQ(ids.size(), w.discs.size() - before);
+      EXPECT_EQ(ids.size(), w.discs().size() - before);
       EXPECT_EQ(*ids.begin(), next_id);
-      EXPECT_EQ(*ids.rbegin(), w.next_disc_id - 1);
+      EXPECT_EQ(*ids.rbegin(), w.next_disc_id() - 1);
       EXPECT_GE(gap, 0.0);
-      ASSERT_GT(w.clusters.size(), next_cluster);
-      for (std::size_t k = next_cluster; k < w.clusters.size(); ++k) {
-        EXPECT_EQ(w.clusters.motion[k], static_cast<std::uint8_t>(Motion::Kinematic));
-        EXPECT_DOUBLE_EQ(w.clusters.vx[k], kV);
+      ASSERT_GT(w.clusters().size(), next_cluster);
+      for (std::size_t k = next_cluster; k < w.clusters().size(); ++k) {
+        EXPECT_EQ(w.clusters().motion[k], static_cast<std::uint8_t>(Motion::Kinematic));
+        EXPECT_DOUBLE_EQ(w.clusters().vx[k], kV);
       }
       // They move rigidly with the plate, clusters and all.
-      std::vector<double> x_then(static_cast<std::size_t>(w.next_disc_id), 0.0);
-      for (std::size_t i = 0; i < w.discs.size(); ++i)
-        if (w.discs.id[i] >= next_id) x_then[static_cast<std::size_t>(w.discs.id[i])] = w.discs.x[i];
-      const double t_then = w.time;
+      std::vector<double> x_then(static_cast<std::size_t>(w.next_disc_id()), 0.0);
+      for (std::size_t i = 0; i < w.discs().size(); ++i)
+        if (w.discs().id[i] >= next_id) x_then[static_cast<std::size_t>(w.discs().id[i])] = w.discs().x[i];
+      const double t_then = w.time();
       for (int s = 0; s < 300; ++s) ASSERT_TRUE(r.exp->advance(w));
-      for (std::size_t i = 0; i < w.discs.size(); ++i) {
-        if (w.discs.id[i] < next_id || w.discs.id[i] >= static_cast<std::int64_t>(x_then.size())) continue;
-        EXPECT_NEAR(w.discs.x[i] - x_then[static_cast<std::size_t>(w.discs.id[i])], kV * (w.time - t_then), 1e-9);
+      for (std::size_t i = 0; i < w.discs().size(); ++i) {
+        if (w.discs().id[i] < next_id || w.discs().id[i] >= static_cast<std::int64_t>(x_then.size())) continue;
+        EXPECT_NEAR(w.discs().x[i] - x_then[static_cast<std::size_t>(w.discs().id[i])], kV * (w.time() - t_then), 1e-9);
       }
     }
-    if (w.time >= next_output - 1e-9 * interval) {
+    if (w.time() >= next_output - 1e-9 * interval) {
       next_output += interval;
       ++outputs;
       const auto m = r.exp->measure(w);
       const double entered = r.col(m, "n_entered"), n = r.col(m, "n_discs"), eroded = r.col(m, "n_eroded"),
                    left = r.col(m, "n_left");
       EXPECT_EQ(entered, n + eroded + left) << "output " << outputs;
-      EXPECT_EQ(n, static_cast<double>(w.discs.size()));
-      EXPECT_EQ(entered, static_cast<double>(w.next_disc_id));
-      EXPECT_EQ(eroded + left, static_cast<double>(w.removals.size()));
+      EXPECT_EQ(n, static_cast<double>(w.discs().size()));
+      EXPECT_EQ(entered, static_cast<double>(w.next_disc_id()));
+      EXPECT_EQ(eroded + left, static_cast<double>(w.removals().size()));
     }
   }
   EXPECT_GE(stamps, 1);
@@ -242,7 +243,7 @@ TEST(Wedge, MassIsConservedWithInflowAndErosion) {
   // clusters by the mean of their discs; and nothing above it is left after the last pass.
   const double limit = 0.75 * kH0;
   std::map<std::int64_t, std::pair<double, int>> cluster_mean;
-  for (const auto& rec : w.removals) {
+  for (const auto& rec : w.removals()) {
     ASSERT_EQ(rec.reason, RemovalReason::Eroded);
     if (rec.cluster_id < 0) {
       EXPECT_GT(rec.y, limit);
@@ -258,13 +259,13 @@ TEST(Wedge, MassIsConservedWithInflowAndErosion) {
 // Mean x velocity, in units of v, of dynamic discs touching the pro-side base between x_lo and
 // x_hi (from the wall contacts of the last force pass).
 double basal_speed(const World& w, double x_lo, double x_hi, int& count) {
-  const auto& wc = w.contacts.walls;
+  const auto& wc = w.contacts().walls;
   double sum = 0;
   count = 0;
   for (std::size_t k = 0; k < wc.size(); ++k) {
     const auto i = wc.disc[k];
-    if (wc.wall[k] != 0 || !wc.touching[k] || w.discs.x[i] < x_lo || w.discs.x[i] > x_hi) continue;
-    sum += w.discs.vx[i];
+    if (wc.wall[k] != 0 || !wc.touching[k] || w.discs().x[i] < x_lo || w.discs().x[i] > x_hi) continue;
+    sum += w.discs().vx[i];
     ++count;
   }
   return count > 0 ? sum / count / kV : 0.0;
@@ -273,8 +274,8 @@ double basal_speed(const World& w, double x_lo, double x_hi, int& count) {
 // Discs resting on the retro-side base inside the active region.
 std::vector<std::size_t> retro_base_discs(const World& w) {
   std::vector<std::size_t> out;
-  for (std::size_t i = 0; i < w.discs.size(); ++i)
-    if (w.discs.x[i] > 0.2 * kH0 && w.discs.x[i] < 2.5 * kH0 && w.discs.y[i] - w.discs.radius[i] < 0.01)
+  for (std::size_t i = 0; i < w.discs().size(); ++i)
+    if (w.discs().x[i] > 0.2 * kH0 && w.discs().x[i] < 2.5 * kH0 && w.discs().y[i] - w.discs().radius[i] < 0.01)
       out.push_back(i);
   return out;
 }
@@ -297,14 +298,14 @@ TEST(Wedge, BothBasalConditionsCarryTheLayerAtThePlateSpeed) {
     ASSERT_GE(retro.size(), 5u);  // about 11 d of base: 7-12 discs on it, by realisation
     std::size_t pinned = 0;
     for (auto i : retro) {
-      const bool kinematic = !r.w.discs.is_dynamic(i);
+      const bool kinematic = !r.w.discs().is_dynamic(i);
       pinned += kinematic;
       if (kinematic) {
-        EXPECT_EQ(r.w.discs.vx[i], 0.0);
-        EXPECT_EQ(r.w.discs.vy[i], 0.0);
+        EXPECT_EQ(r.w.discs().vx[i], 0.0);
+        EXPECT_EQ(r.w.discs().vy[i], 0.0);
       }
       if (basal != "traction") {
-        EXPECT_LT(std::fabs(r.w.discs.vx[i]), 0.2 * kV);
+        EXPECT_LT(std::fabs(r.w.discs().vx[i]), 0.2 * kV);
       }
     }
     if (basal == "traction") {
@@ -314,13 +315,13 @@ TEST(Wedge, BothBasalConditionsCarryTheLayerAtThePlateSpeed) {
       // Pinned discs do not move at all.
       std::vector<std::pair<std::int64_t, double>> held;
       for (auto i : retro)
-        if (!r.w.discs.is_dynamic(i)) held.emplace_back(r.w.discs.id[i], r.w.discs.x[i]);
+        if (!r.w.discs().is_dynamic(i)) held.emplace_back(r.w.discs().id[i], r.w.discs().x[i]);
       ASSERT_TRUE(r.run_to(0.2));
       for (auto [id, x] : held) {
-        const auto i = index_of_id(r.w.discs, id);
-        ASSERT_LT(i, r.w.discs.size());
-        EXPECT_EQ(r.w.discs.x[i], x);
-        EXPECT_FALSE(r.w.discs.is_dynamic(i));
+        const auto i = index_of_id(r.w.discs(), id);
+        ASSERT_LT(i, r.w.discs().size());
+        EXPECT_EQ(r.w.discs().x[i], x);
+        EXPECT_FALSE(r.w.discs().is_dynamic(i));
       }
     }
   }
@@ -331,17 +332,17 @@ TEST(Wedge, BothBasalConditionsCarryTheLayerAtThePlateSpeed) {
 // step, so a disc that touched the base slid for up to 100 steps. Traction has no hook.
 TEST(Wedge, ConstantVelocityPinsADiscTouchingTheRetroBaseAtTheNextStep) {
   WedgeRun traction({"wedge.basal=traction", "wedge.s_end=1"});
-  EXPECT_TRUE(traction.w.hooks.empty(Stage::AfterForces));
+  EXPECT_TRUE(traction.w.hooks().empty(Stage::AfterForces));
 
   WedgeRun r({"wedge.basal=constant_velocity", "wedge.s_end=1"});
-  EXPECT_EQ(r.w.hooks.names(Stage::AfterForces), std::vector<std::string>{"wedge.pin_retro_base"});
+  EXPECT_EQ(r.w.hooks().names(Stage::AfterForces), std::vector<std::string>{"wedge.pin_retro_base"});
   for (int s = 0; s < 150; ++s) ASSERT_TRUE(r.exp->advance(r.w));
-  ASSERT_NE(r.w.step % 100, 0u);  // the next step is no housekeeping step
+  ASSERT_NE(r.w.step() % 100, 0u);  // the next step is no housekeeping step
   // A body (disc or cluster) held on the retro base, released and set sliding: it touches the
   // base again in the next step's force pass.
   auto& wedge = dynamic_cast<WedgeExperiment&>(*r.exp);
-  const auto& d = r.w.discs;
-  const auto& c = r.w.clusters;
+  const auto& d = r.w.discs();
+  const auto& c = r.w.clusters();
   std::size_t i = d.size();
   for (std::size_t k = 0; k < d.size() && i == d.size(); ++k)
     if (!d.is_dynamic(k) && d.x[k] > 2 && d.x[k] < 3 * kH0 && d.y[k] < d.radius[k]) i = k;
@@ -358,7 +359,7 @@ TEST(Wedge, ConstantVelocityPinsADiscTouchingTheRetroBaseAtTheNextStep) {
   };
   for (auto m : member_ids()) wedge.pinned_.at(m) = 0;
   r.w.edit_motion([&](MotionEdit& e) { e.body_of(i, Motion::Dynamic); });
-  (k >= 0 ? r.w.clusters.vx[static_cast<std::size_t>(k)] : r.w.discs.vx[i]) = 0.01;
+  (k >= 0 ? inside(r.w).clusters.vx[static_cast<std::size_t>(k)] : inside(r.w).discs.vx[i]) = 0.01;
   const double x = k >= 0 ? c.x[static_cast<std::size_t>(k)] : d.x[i];
   ASSERT_TRUE(r.exp->advance(r.w));
   const auto j = index_of_id(d, id);
@@ -387,7 +388,7 @@ TEST(Wedge, RisesAboveTheSPointWithDivergingFronts) {
   double next_output = interval;
   std::vector<std::vector<double>> rows;
   while (r.exp->advance(r.w))
-    if (r.w.time >= next_output - 1e-9 * interval) {
+    if (r.w.time() >= next_output - 1e-9 * interval) {
       next_output += interval;
       rows.push_back(r.exp->measure(r.w));
       r.exp->after_output(r.w);
@@ -404,11 +405,11 @@ TEST(Wedge, RisesAboveTheSPointWithDivergingFronts) {
   EXPECT_GT(r.col(last, "Dr"), 0.5);
   // Away from it the layer is undeformed: nothing above h0 + d_max beyond 1.5 h0 of the fronts.
   std::size_t outside = 0;
-  for (std::size_t i = 0; i < r.w.discs.size(); ++i) {
-    const double x = r.w.discs.x[i] / h0;
+  for (std::size_t i = 0; i < r.w.discs().size(); ++i) {
+    const double x = r.w.discs().x[i] / h0;
     if (x < r.col(last, "Dp") - 1.5 || x > r.col(last, "Dr") + 1.5) {
       ++outside;
-      EXPECT_LT(r.w.discs.y[i], h0 + 1.0) << x;
+      EXPECT_LT(r.w.discs().y[i], h0 + 1.0) << x;
     }
   }
   EXPECT_GT(outside, 1000u);

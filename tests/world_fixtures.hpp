@@ -19,24 +19,24 @@ inline Wall wall(double ax, double ay, double bx, double by, WallFriction f = Wa
 // Keeps in `out` a copy of each step's summed disc forces as integration receives them (it
 // zeroes them after use, so World::scratch holds zeros between steps): an AfterForces hook.
 inline void record_step_forces(World& w, std::vector<DiscForce>& out) {
-  w.hooks.add(Stage::AfterForces, "test.record_forces", [&out](World& world) { out = world.scratch.forces; });
+  w.hooks().add(Stage::AfterForces, "test.record_forces", [&out](World& world) { out = world.scratch().forces; });
 }
 
 // Elastic energy stored in the disc-disc and disc-wall normal springs.
 inline double spring_energy(const World& w) {
   double e = 0;
-  const auto& d = w.discs;
-  for (std::size_t p = 0; p < w.neighbors.size(); ++p) {
-    const auto i = w.neighbors.first[p], j = w.neighbors.second[p];
+  const auto& d = w.discs();
+  for (std::size_t p = 0; p < w.neighbors().size(); ++p) {
+    const auto i = w.neighbors().first[p], j = w.neighbors().second[p];
     const double delta = d.radius[i] + d.radius[j] - std::hypot(d.x[j] - d.x[i], d.y[j] - d.y[i]);
-    if (delta > 0) e += 0.5 * w.law.kn * delta * delta;
+    if (delta > 0) e += 0.5 * w.law().kn * delta * delta;
   }
-  for (std::size_t k = 0; k < w.contacts.walls.size(); ++k) {
-    const auto i = w.contacts.walls.disc[k];
+  for (std::size_t k = 0; k < w.contacts().walls.size(); ++k) {
+    const auto i = w.contacts().walls.disc[k];
     double cx, cy;
-    const double dist = std::sqrt(closest_point_on_segment(w.walls[w.contacts.walls.wall[k]], d.x[i], d.y[i], cx, cy));
+    const double dist = std::sqrt(closest_point_on_segment(w.walls()[w.contacts().walls.wall[k]], d.x[i], d.y[i], cx, cy));
     const double delta = d.radius[i] - dist;
-    if (delta > 0) e += 0.5 * w.law.kn * delta * delta;
+    if (delta > 0) e += 0.5 * w.law().kn * delta * delta;
   }
   return e;
 }

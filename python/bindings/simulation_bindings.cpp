@@ -53,7 +53,7 @@ class Simulation {
       if (exp_->advance(world_)) ++k;
       else done_ = true;
       const int threads = tuner_.threads();
-      if (tuner_.after_step(static_cast<double>(world_.discs.size()), seconds_since(start_)) != threads)
+      if (tuner_.after_step(static_cast<double>(world_.discs().size()), seconds_since(start_)) != threads)
         omp_set_num_threads(tuner_.threads());
     }
     left_ = std::chrono::steady_clock::now();
@@ -63,7 +63,7 @@ class Simulation {
   // Steps until the experiment's scalar `key` (or "time") reaches `value`; false if it ended first.
   bool advance_to(const std::string& key, double value) {
     auto current = [&] {
-      if (key == "time") return world_.time;
+      if (key == "time") return world_.time();
       for (const auto& [k, v] : exp_->scalars(world_))
         if (k == key) return v;
       throw pyb::key_error("advance_to: the experiment has no scalar '" + key + "' (it has time and its output scalars)");

@@ -24,7 +24,8 @@ namespace {
 // A numpy view of one per-disc array; `base` (the handle) keeps the owner of the memory alive.
 pyb::array view(const pyb::object& base, World& w, const std::string& name, bool writable) {
   pyb::array out;
-  w.discs.for_each_array([&](const char* n, auto& v) {
+  // The arrays' memory for the view: read-only unless asked (then `changed` follows the writes).
+  w.discs_for_writing().for_each_array([&](const char* n, auto& v) {
     if (name != n) return;
     using T = typename std::decay_t<decltype(v)>::value_type;
     out = pyb::array_t<T>({static_cast<pyb::ssize_t>(v.size())}, {static_cast<pyb::ssize_t>(sizeof(T))}, v.data(), base);
@@ -36,19 +37,19 @@ pyb::array view(const pyb::object& base, World& w, const std::string& name, bool
 
 std::vector<std::string> array_names(World& w) {
   std::vector<std::string> names;
-  w.discs.for_each_array([&](const char* n, auto&) { names.emplace_back(n); });
+  w.discs().for_each_array([&](const char* n, auto&) { names.emplace_back(n); });
   return names;
 }
 
 void check_index(const World& w, std::size_t i) {
-  if (i >= w.discs.size())
-    throw pyb::index_error("disc index " + std::to_string(i) + " out of range (" + std::to_string(w.discs.size()) + " discs)");
+  if (i >= w.discs().size())
+    throw pyb::index_error("disc index " + std::to_string(i) + " out of range (" + std::to_string(w.discs().size()) + " discs)");
 }
 
 // Free discs only: a member disc sits where its cluster's pose puts it.
 void check_free(const World& w, std::size_t i) {
   check_index(w, i);
-  if (w.discs.cluster[i] != kNoCluster)
+  if (w.discs().cluster[i] != kNoCluster)
     throw pyb::value_error("disc " + std::to_string(i) + " belongs to a cluster: move or pin the cluster instead");
 }
 
@@ -90,7 +91,7 @@ void set_motion(World& w, const std::vector<std::size_t>& idx, Motion m, double 
 
 void bind_world(pyb::module_& m) {
   pyb::class_<WorldHandle>(m, "World")
-      .def_property_readonly("step", [](const WorldHandle& h) { return h.get().step; })
+      .def_property_readonly("step", [](const WorldHandle& h) { return h.get().step(); })
       // The layer thickness h0 [d] (a wedge's unit of length) and the resolved configuration as
       // a nested dict ({"wedge": {"s_end": 8.0, ...}}), as the run's config.toml holds them.
       .def_property_readonly("h0",
@@ -104,10 +105,10 @@ void bind_world(pyb::module_& m) {
                                if (h.config == nullptr) return pyb::none();
                                return pyb::module_::import("tomllib").attr("loads")(h.config->to_toml());
                              })
-      .def_property_readonly("time", [](const WorldHandle& h) { return h.get().time; })
-      .def_property_readonly("dt", [](const WorldHandle& h) { return h.get().dt; })
-      .def_property_readonly("n_clusters", [](const WorldHandle& h) { return h.get().clusters.size(); })
-      .def("__len__", [](const WorldHandle& h) { return h.get().discs.size(); })
+      .def_property_readonly("time", [](const WorldHandle& h) { return h.get().time(); })
+      .def_property_readonly("dt", [](const WorldHandle& h) { return h.get().dt(); })
+      .def_property_readonly("n_clusters", [](const WorldHandle& h) { return h.get().clusters().size(); })
+      .def("__len__", [](const WorldHandle& h) { return h.get().discs().size(); })
       .def_property_readonly("array_names", [](const WorldHandle& h) { return array_names(h.get()); })
       .def("array",
            [](pyb::object self, const std::string& name, bool writable) {
@@ -119,8 +120,7 @@ void bind_world(pyb::module_& m) {
       .def("changed",
            [](const WorldHandle& h) {
              World& w = h.get();
-             update_cluster_discs(w.clusters, w.discs);
-             w.invalidate_neighbors();
+             w.discs_changed();
            },
            "after writing into a view: member discs back on their bodies, the neighbour list rebuilt")
       .def("move",
@@ -129,15 +129,14 @@ void bind_world(pyb::module_& m) {
              World& w = h.get();
              if (x.size() != idx.size() || y.size() != idx.size()) throw pyb::value_error("move: indices, x and y differ in length");
              for (auto i : idx) check_free(w, i);
-             for (std::size_t k = 0; k < idx.size(); ++k) w.discs.x[idx[k]] = x[k], w.discs.y[idx[k]] = y[k];
-             w.invalidate_neighbors();
+             for (std::size_t k = 0; k < idx.size(); ++k) w.move_disc(idx[k], x[k], y[k]);
            },
            pyb::arg("indices"), pyb::arg("x"), pyb::arg("y"), "puts free discs at new centres")
       .def("set_velocity",
            [](const WorldHandle& h, const std::vector<std::size_t>& idx, double vx, double vy, double omega) {
              World& w = h.get();
              for (auto i : idx) check_free(w, i);
-             for (auto i : idx) w.discs.vx[i] = vx, w.discs.vy[i] = vy, w.discs.omega[i] = omega;
+             for (auto i : idx) w.set_disc_velocity(i, vx, vy, omega);
            },
            pyb::arg("indices"), pyb::arg("vx"), pyb::arg("vy"), pyb::arg("omega") = 0.0)
       .def("pin", [](const WorldHandle& h, const std::vector<std::size_t>& idx, double vx,
@@ -156,7 +155,7 @@ void bind_world(pyb::module_& m) {
       .def("remove",
            [](const WorldHandle& h, const std::vector<std::size_t>& idx, const std::string& reason) {
              World& w = h.get();
-             std::vector<std::uint8_t> flags(w.discs.size(), 0);
+             std::vector<std::uint8_t> flags(w.discs().size(), 0);
              for (auto i : idx) check_index(w, i), flags[i] = 1;
              return w.remove(flags, reason_of(reason));
            },
@@ -170,16 +169,16 @@ void bind_world(pyb::module_& m) {
       .def_property_readonly("walls",
                              [](const WorldHandle& h) {
                                pyb::list out;
-                               for (const auto& w : h.get().walls) out.append(wall_dict(w));
+                               for (const auto& w : h.get().walls()) out.append(wall_dict(w));
                                return out;
                              })
       .def("add_wall",
            [](const WorldHandle& h, const std::string& name, double ax, double ay, double bx, double by,
               const std::string& friction, double mu, double vx, double vy) {
              World& w = h.get();
-             for (const auto& wall : w.walls)
+             for (const auto& wall : w.walls())
                if (wall.name == name) throw pyb::value_error("a wall named '" + name + "' exists already");
-             auto walls = w.walls;
+             auto walls = w.walls();
              Wall nw;
              nw.name = name; nw.ax = ax; nw.ay = ay; nw.bx = bx; nw.by = by;
              nw.friction = friction_of(friction); nw.mu = mu; nw.vx = vx; nw.vy = vy;
@@ -218,8 +217,8 @@ void bind_world(pyb::module_& m) {
       .def("scalars",
            [](const WorldHandle& h) {
              pyb::dict d;
-             d["step"] = h.get().step;
-             d["time"] = h.get().time;
+             d["step"] = h.get().step();
+             d["time"] = h.get().time();
              if (h.experiment)
                for (const auto& [k, v] : h.experiment->scalars(h.get())) d[pyb::str(k)] = v;
              return d;
@@ -227,7 +226,7 @@ void bind_world(pyb::module_& m) {
            "the experiment's scalars of an output (S of a wedge), with step and time")
       .def("status", [](const WorldHandle& h) { return h.experiment ? h.experiment->status(h.get()) : std::string(); })
       .def("kinetic_energy", [](const WorldHandle& h) { return h.get().kinetic_energy(); })
-      .def_property_readonly("n_removals", [](const WorldHandle& h) { return h.get().removals.size(); });
+      .def_property_readonly("n_removals", [](const WorldHandle& h) { return h.get().removals().size(); });
 }
 
 }  // namespace orogen::py

@@ -26,31 +26,31 @@ void add(ContactList& c, bool wall, std::int64_t id_a, std::int64_t id_b, std::i
 template <class Normal>
 ContactList measure(const World& w) {
   ContactList c;
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   w.for_each_pair_contact([&](const PairContactView& p) {
     const auto i = p.first, j = p.second;
     const double gn = p.gamma_n;
     // The pair kernel of the force stage on a copy of the history: the state keeps its own.
     const ContactLane f = contact_lane<Normal>(d.x[j] - d.x[i], d.y[j] - d.y[i], d.radius[i], d.radius[j],
                                                d.vx[j] - d.vx[i], d.vy[j] - d.vy[i], d.omega[i], d.omega[j], gn,
-                                               w.law.tangential_damping_ratio * gn, p.xi, w.law.kn, w.law.ks,
-                                               w.contact_friction(i, j), w.dt);
+                                               w.law().tangential_damping_ratio * gn, p.xi, w.law().kn, w.law().ks,
+                                               w.contact_friction(i, j), w.dt());
     if (!f.touching) return;
     const double reach = d.radius[i] - 0.5 * f.delta;  // centre of i to the middle of the overlap
     add(c, false, d.id[i], d.id[j], i, j, d.x[i] + reach * f.nx, d.y[i] + reach * f.ny, f.nx, f.ny, f.fn, f.ft, f.fx,
         f.fy, f.delta, f.at_limit);
   });
   // Rows of the enabled walls, as the output's `walls` dataset lists them.
-  std::vector<std::int64_t> row(w.walls.size(), -1);
+  std::vector<std::int64_t> row(w.walls().size(), -1);
   std::int64_t enabled = 0;
-  for (std::size_t k = 0; k < w.walls.size(); ++k)
-    if (w.walls[k].enabled) row[k] = enabled++;
+  for (std::size_t k = 0; k < w.walls().size(); ++k)
+    if (w.walls()[k].enabled) row[k] = enabled++;
   w.for_each_wall_contact([&](const WallContactView& k) {
     const auto i = k.disc;
     if (row[k.wall] < 0) return;
-    const WallContactForce f = wall_contact_force<Normal>(w.walls[k.wall], d.x[i], d.y[i], d.vx[i], d.vy[i],
+    const WallContactForce f = wall_contact_force<Normal>(w.walls()[k.wall], d.x[i], d.y[i], d.vx[i], d.vy[i],
                                                           d.omega[i], d.radius[i], k.gamma_n, k.traction_mass, k.xi,
-                                                          d.has_materials ? d.slip[i] : 0.0, w.law, w.dt);
+                                                          d.has_materials ? d.slip[i] : 0.0, w.law(), w.dt());
     if (!f.touching) return;
     const double reach = d.radius[i] - 0.5 * f.delta;
     add(c, true, row[k.wall], d.id[i], -1, i, d.x[i] - reach * f.nx, d.y[i] - reach * f.ny, f.nx, f.ny, f.fn,
@@ -61,7 +61,7 @@ ContactList measure(const World& w) {
 
 ContactList measure(const World& w) {
   ContactList c;
-  with_normal_law(w.law.normal_force, [&](auto normal) { c = measure<decltype(normal)>(w); });
+  with_normal_law(w.law().normal_force, [&](auto normal) { c = measure<decltype(normal)>(w); });
   return c;
 }
 

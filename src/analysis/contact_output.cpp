@@ -120,16 +120,16 @@ std::vector<SnapshotGroup> contact_output_groups(const World& world, const Conta
     const ContactList contacts = measure_contact_forces(world);
     if (options.contacts) {
       groups.push_back(contacts_group(contacts));
-      add_segments(groups.back(), contacts, world.discs);
+      add_segments(groups.back(), contacts, world.discs());
     }
     if (options.stress || options.stress_grid > 0) {
-      const DiscStress stress = love_weber_stress(world.discs, contacts);
+      const DiscStress stress = love_weber_stress(world.discs(), contacts);
       if (options.stress_grid > 0)
-        groups.push_back(grid_group(coarse_grain_stress(world.discs, stress, options.stress_grid)));
+        groups.push_back(grid_group(coarse_grain_stress(world.discs(), stress, options.stress_grid)));
       if (options.stress) groups.push_back(stress_group(stress));
     }
   }
-  if (world.clusters.size() > 0) groups.push_back(clusters_group(world.clusters));
+  if (world.clusters().size() > 0) groups.push_back(clusters_group(world.clusters()));
   return groups;
 }
 

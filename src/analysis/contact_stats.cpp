@@ -7,7 +7,7 @@ namespace orogen {
 
 ContactStats measure_contacts(const World& w) {
   ContactStats s;
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   if (!w.contacts_listed_for_discs()) return s;  // list not built for these discs yet
   w.for_each_pair_contact([&](const PairContactView& p) {
     const auto i = p.first, j = p.second;

@@ -14,16 +14,16 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 void DisplacementTracker::remember(const World& w) {
   prev_x_[2] = std::move(prev_x_[1]); prev_y_[2] = std::move(prev_y_[1]);
   prev_x_[1] = std::move(prev_x_[0]); prev_y_[1] = std::move(prev_y_[0]);
-  prev_x_[0].assign(static_cast<std::size_t>(w.next_disc_id), kNaN);
-  prev_y_[0].assign(static_cast<std::size_t>(w.next_disc_id), kNaN);
-  for (std::size_t i = 0; i < w.discs.size(); ++i) {
-    prev_x_[0][static_cast<std::size_t>(w.discs.id[i])] = w.discs.x[i];
-    prev_y_[0][static_cast<std::size_t>(w.discs.id[i])] = w.discs.y[i];
+  prev_x_[0].assign(static_cast<std::size_t>(w.next_disc_id()), kNaN);
+  prev_y_[0].assign(static_cast<std::size_t>(w.next_disc_id()), kNaN);
+  for (std::size_t i = 0; i < w.discs().size(); ++i) {
+    prev_x_[0][static_cast<std::size_t>(w.discs().id[i])] = w.discs().x[i];
+    prev_y_[0][static_cast<std::size_t>(w.discs().id[i])] = w.discs().y[i];
   }
 }
 
 std::vector<SnapshotField> DisplacementTracker::fields(const World& w) const {
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   std::vector<double> rel(d.size(), 0.0), dx3(d.size(), kNaN), dy3(d.size(), kNaN);
   // Position of disc i at an earlier output (NaN if it did not exist then).
   auto prev = [&](const std::vector<double>& a, std::size_t i) {

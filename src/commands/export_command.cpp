@@ -52,10 +52,10 @@ LammpsLaw lammps_law(const fs::path& run) {
   Config config = Config::load(run / "config.toml", {});
   World world;
   apply_engine_config(config, world);
-  const ContactLaw& law = world.law;
+  const ContactLaw& law = world.law();
   const double m_eff = std::numbers::pi / 8;
-  const double gamma_n = law.gamma_n(m_eff, world.dt) / m_eff;
-  return {law.kn, law.ks, gamma_n, law.tangential_damping_ratio * gamma_n, law.mu, world.dt};
+  const double gamma_n = law.gamma_n(m_eff, world.dt()) / m_eff;
+  return {law.kn, law.ks, gamma_n, law.tangential_damping_ratio * gamma_n, law.mu, world.dt()};
 }
 
 }  // namespace

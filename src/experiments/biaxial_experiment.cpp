@@ -35,7 +35,7 @@ double sample_height(const World& w) {
 }
 
 double mean_kinetic_energy(const World& w) {
-  return w.discs.size() ? w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitDiscMass : 0.0;
+  return w.discs().size() ? w.kinetic_energy() / static_cast<double>(w.discs().size()) / kUnitDiscMass : 0.0;
 }
 
 double solid_area(const Discs& d) {
@@ -54,14 +54,13 @@ void BiaxialExperiment::setup(World& w) {
   p.length = spec_.width;
   p.thickness = spec_.height;
   settle_layer(w, p, spec_.settle, /*apply_materials=*/false);  // materials once consolidated
-  w.removals.clear();  // the trimmed excess never belonged to the sample
+  w.clear_removals();  // the trimmed excess never belonged to the sample
 
   // Gravity off; four smooth walls around the sample, long enough never to leave a gap at the
   // corners as the walls move.
-  w.body.gx = w.body.gy = 0;
-  w.body.drag = 0;
+  w.set_body_force({.gx = 0, .gy = 0, .drag = 0});
   double top = 0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) top = std::max(top, w.discs.y[i] + w.discs.radius[i]);
+  for (std::size_t i = 0; i < w.discs().size(); ++i) top = std::max(top, w.discs().y[i] + w.discs().radius[i]);
   const double W = spec_.width;
   Wall bottom{.name = "bottom", .ax = -0.5 * W, .ay = 0, .bx = 1.5 * W, .by = 0};
   Wall upper{.name = "top", .ax = -0.5 * W, .ay = top, .bx = 1.5 * W, .by = top};
@@ -91,7 +90,7 @@ std::array<double, 4> BiaxialExperiment::wall_stresses(const World& w) const {
 // A stress error e moves the wall outward at gain * e * d / (k_n dt): with one contact per d
 // of wall and a rigid sample behind, that removes the fraction `gain` of the error in one step.
 void BiaxialExperiment::servo(World& w, const std::array<double, 4>& s, bool top_too) const {
-  const double per_stress = spec_.servo_gain * spec_.packing.d_max / (w.law.kn * w.dt);
+  const double per_stress = spec_.servo_gain * spec_.packing.d_max / (w.law().kn * w.dt());
   for (std::size_t k = top_too ? kTop : kLeft; k <= kRight; ++k) {
     const double out = per_stress * (s[k] - sigma3_code_);
     w.set_wall_velocity(kWallNames[k], -out * kNormalX[k], -out * kNormalY[k]);
@@ -121,7 +120,7 @@ bool BiaxialExperiment::advance(World& w) {
     check_steps_ = 0;
     if (steady) {
       start_shearing(w);
-    } else if (w.time > spec_.settle.max_time) {
+    } else if (w.time() > spec_.settle.max_time) {
       throw InstabilityError(fmt::format("the biaxial sample did not consolidate to sigma3 = {} within "
                                          "settle.max_time = {} (mean kinetic energy per disc {:.3g} m g d)",
                                          spec_.sigma3, spec_.settle.max_time, mean_kinetic_energy(w)));
@@ -151,7 +150,7 @@ double BiaxialExperiment::cut_specimen(World& w) {
   const double bottom = w.wall("bottom").ay, top = w.wall("top").ay;
   const double cx = 0.5 * (left + right), cy = 0.5 * (bottom + top);
   const double radius = 0.5 * std::min(right - left, top - bottom);
-  const Discs& d = w.discs;
+  const Discs& d = w.discs();
   std::vector<std::uint8_t> outside(d.size());
   for (std::size_t i = 0; i < d.size(); ++i)
     outside[i] = std::hypot(d.x[i] - cx, d.y[i] - cy) + d.radius[i] > radius ? 1 : 0;
@@ -180,12 +179,12 @@ void BiaxialExperiment::start_shearing(World& w) {
   // The Brazilian specimen is cut before it is bonded: no bond crosses the cut.
   h0_ = spec_.brazilian ? cut_specimen(w) : sample_height(w);
   a0_ = spec_.brazilian ? 0.25 * std::numbers::pi * h0_ * h0_ : sample_width(w) * h0_;
-  solid_fraction_start_ = solid_area(w.discs) / a0_;
+  solid_fraction_start_ = solid_area(w.discs()) / a0_;
   w.set_wall_velocity("top", 0, -spec_.strain_rate * h0_);  // constant speed: the strain rate is nominal (of H0)
   // Named materials: the sample is the first (no units: the whole sample), bonded now, at the
   // confining stress, as bonded samples are prepared (docs/materials.md, Calibration).
-  if (spec_.material >= 0) w.materials.units = {{static_cast<std::size_t>(spec_.material), spec_.height}};
-  apply_units(w, 0, w.discs.size(), spec_.packing.seed);
+  if (spec_.material >= 0) w.set_layer_units({{static_cast<std::size_t>(spec_.material), spec_.height}});
+  apply_units(w, 0, w.discs().size(), spec_.packing.seed);
   output_sum_ = {};
   output_steps_ = 0;
   phase_ = Shearing;
@@ -264,8 +263,8 @@ std::vector<double> BiaxialExperiment::measure(const World& w) const {
   // The Brazilian specimen has no confinement: no mobilised friction to speak of.
   const double phi = spec_.brazilian && phase_ != Consolidating ? std::numeric_limits<double>::quiet_NaN()
                                                                  : mobilised_friction(r.sigma1, r.sigma3);
-  const BiaxialSample sample{.step = static_cast<double>(w.step),
-                             .time = w.time,
+  const BiaxialSample sample{.step = static_cast<double>(w.step()),
+                             .time = w.time(),
                              .phase = static_cast<double>(phase_),
                              .axial_strain = r.axial_strain,
                              .vol_strain = r.vol_strain,
@@ -277,7 +276,7 @@ std::vector<double> BiaxialExperiment::measure(const World& w) const {
                              .mu_mobilised = std::tan(phi),
                              .coordination = measure_contacts(w).contacts_per_disc,
                              .kinetic_energy = mean_kinetic_energy(w),
-                             .n_discs = static_cast<double>(w.discs.size())};
+                             .n_discs = static_cast<double>(w.discs().size())};
   return series_values(kSeries, sample);
 }
 
@@ -303,7 +302,7 @@ std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
   for (const auto& row : rows_)
     if (row.axial_strain >= spec_.residual_from * spec_.strain_end) { p += 0.5 * (row.sigma1 + row.sigma3); ++n; }
   p = n ? p / n * kUnitDiscMass : std::numeric_limits<double>::quiet_NaN();
-  const double inertial = 2 * spec_.strain_rate * 2 * mean_radius(w.discs) / std::sqrt(p);
+  const double inertial = 2 * spec_.strain_rate * 2 * mean_radius(w.discs()) / std::sqrt(p);
   std::vector<SummaryValue> out = {
       {"phi_peak_deg", "peak mobilised friction angle [deg]", r.phi_peak * kDegPerRad},
       {"axial_strain_peak", "axial strain at the peak [-]", r.strain_at_peak},
@@ -326,7 +325,7 @@ std::vector<SummaryValue> BiaxialExperiment::summary(const World& w) const {
       {"inertial_number", "2 x axial strain rate x mean diameter x sqrt(1 / mean stress) in the residual state; "
                           "quasi-static below about 1e-3 [-]",
        inertial},
-      {"n_discs", "number of discs [-]", static_cast<double>(w.discs.size())}};
+      {"n_discs", "number of discs [-]", static_cast<double>(w.discs().size())}};
   // Critical taper of a dry, non-cohesive wedge on a flat base (MODEL §9) from each bulk friction.
   for (double mu_b : kTaperBases)
     for (const auto& [name, phi] : {std::pair{"residual", r.phi_residual}, std::pair{"peak", r.phi_peak}})
@@ -350,13 +349,13 @@ std::vector<SummaryValue> BiaxialExperiment::brazilian_summary(const World& w) c
           {"axial_strain_peak", "shortening of the diameter at the peak force, relative to D [-]",
            strain_at_peak_force_},
           {"diameter", "specimen diameter D when loading began [d]", h0_},
-          {"bonds_broken", "bonds broken by the end [-]", static_cast<double>(w.bonds.breaks.size())},
-          {"bonds_intact", "bonds intact at the end [-]", static_cast<double>(w.bonds.size())},
+          {"bonds_broken", "bonds broken by the end [-]", static_cast<double>(w.bonds().breaks.size())},
+          {"bonds_intact", "bonds intact at the end [-]", static_cast<double>(w.bonds().size())},
           {"sigma3", "consolidation stress before the cut [m g / d^2]", spec_.sigma3},
           {"solid_fraction_start", "disc area / specimen area when loading began [-]", solid_fraction_start_},
           {"coordination_start", "contacts per disc of the consolidated sample before the cut [-]",
            coordination_start_},
-          {"n_discs", "number of discs [-]", static_cast<double>(w.discs.size())}};
+          {"n_discs", "number of discs [-]", static_cast<double>(w.discs().size())}};
 }
 
 void BiaxialExperiment::save(ArchiveWriter& out) const {

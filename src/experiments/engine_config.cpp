@@ -9,26 +9,28 @@
 namespace orogen {
 
 void apply_engine_config(const Config& c, World& w) {
-  w.law.kn = c.get_float("contact.kn");
-  w.law.ks = c.get_float("contact.ks_ratio") * w.law.kn;
-  w.law.mu = c.get_float("contact.mu");
-  w.law.normal_force = normal_law_index(c.get_string("contact.normal_force"));  // a name the schema allows
+  ContactLaw law = w.law();
+  law.kn = c.get_float("contact.kn");
+  law.ks = c.get_float("contact.ks_ratio") * law.kn;
+  law.mu = c.get_float("contact.mu");
+  law.normal_force = normal_law_index(c.get_string("contact.normal_force"));  // a name the schema allows
   const bool per_mass = c.get_string("contact.damping") == "per_mass";
-  w.law.damping = per_mass ? NormalDamping::PerMass : NormalDamping::Restitution;
-  w.law.restitution = c.get_float("contact.restitution");
-  w.law.damping_rate = c.get_float("contact.damping_rate");
+  law.damping = per_mass ? NormalDamping::PerMass : NormalDamping::Restitution;
+  law.restitution = c.get_float("contact.restitution");
+  law.damping_rate = c.get_float("contact.damping_rate");
   bool calibrated = true;  // whether the restitution calibration holds for the normal law
-  with_normal_law(w.law.normal_force, [&](auto law) { calibrated = law.restitution_damping; });
+  with_normal_law(law.normal_force, [&](auto normal) { calibrated = normal.restitution_damping; });
   if (!per_mass && !calibrated)
     throw config_error(c.sources_of({"contact.damping", "contact.normal_force"}), "contact.damping",
                        c.get_string("contact.damping"),
                        fmt::format("\"per_mass\" with contact.normal_force = \"{}\" (the restitution calibration "
                                    "is the clamped linear law's); give the dashpot as contact.damping_rate",
                                    c.get_string("contact.normal_force")));
-  w.law.tangential_damping_ratio = c.get_float("contact.tangential_damping_ratio");
-  w.neighbors.skin = c.get_float("neighbor.skin");
-  w.sort_every = c.get_int32("neighbor.sort_every");
-  w.materials = c.materials();  // the experiment gives its discs their materials once settled
+  law.tangential_damping_ratio = c.get_float("contact.tangential_damping_ratio");
+  w.set_contact_law(law);
+  w.set_neighbor_skin(c.get_float("neighbor.skin"));
+  w.set_sort_every(c.get_int32("neighbor.sort_every"));
+  w.set_materials(c.materials());  // the experiment gives its discs their materials once settled
   const ConfigTimeStep step = config_time_step(c);
   if (step.given && step.dt > step.limit && step.k_bond > 0)
     throw config_error(c.sources_of({"time.dt", "contact.kn", "particles.d_min"}), "time.dt",
@@ -44,7 +46,7 @@ void apply_engine_config(const Config& c, World& w) {
                        fmt::format("must not exceed the stability limit 0.1 * 2 pi sqrt(m_min_eff / k_n) = {:.6g} "
                                    "computed from {} (or use 0 to compute it)",
                                    step.limit, c.describe({"contact.kn", "particles.d_min"})));
-  w.dt = step.dt;
+  w.set_time_step(step.dt);
 }
 
 }  // namespace orogen

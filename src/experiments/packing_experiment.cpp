@@ -22,23 +22,23 @@ namespace {
 
 void PackingExperiment::setup(World& w) {
   place_packing(w, packing_);
-  w.body.drag = settle_.drag;
+  w.set_body_force({.gx = w.body().gx, .gy = w.body().gy, .drag = settle_.drag});
   mu_ = w.friction();
   phase_ = Falling;
   phase_start_time_ = 0;
 }
 
 double PackingExperiment::mean_kinetic_energy(const World& w) const {
-  if (w.discs.size() == 0) return 0;
-  return w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitDiscMass;
+  if (w.discs().size() == 0) return 0;
+  return w.kinetic_energy() / static_cast<double>(w.discs().size()) / kUnitDiscMass;
 }
 
 bool PackingExperiment::advance(World& w) {
   if (phase_ == Done) return false;
   w.set_friction(phase_ < Relaxing ? settle_.mu : mu_);
   w.advance();
-  if (w.step % check_every_ != 0) return true;
-  if (w.time > settle_.max_time)
+  if (w.step() % check_every_ != 0) return true;
+  if (w.time() > settle_.max_time)
     throw InstabilityError(fmt::format("the packing did not come to rest within settle.max_time = {} "
                                        "(mean kinetic energy per disc {:.3g} m g d, threshold {:.3g})",
                                        settle_.max_time, mean_kinetic_energy(w), settle_.ke_threshold));
@@ -48,19 +48,19 @@ bool PackingExperiment::advance(World& w) {
       if (at_rest) {
         trim_to_thickness(w, packing_.thickness);
         phase_ = Resettling;
-        phase_start_time_ = w.time;
+        phase_start_time_ = w.time();
       }
       break;
     case Resettling:
       if (at_rest) {
-        w.body.drag = 0;
+        w.set_body_force({.gx = w.body().gx, .gy = w.body().gy, .drag = 0});
         phase_ = Relaxing;
-        phase_start_time_ = w.time;
+        phase_start_time_ = w.time();
       }
       break;
     case Relaxing:
-      if (at_rest && w.time - phase_start_time_ >= settle_.relax_time) {
-        record_initial_state(w, 0.0, packing_.length, settle_.column_width_factor * mean_radius(w.discs));
+      if (at_rest && w.time() - phase_start_time_ >= settle_.relax_time) {
+        record_initial_state(w, 0.0, packing_.length, settle_.column_width_factor * mean_radius(w.discs()));
         phase_ = Done;
         w.set_friction(mu_);
         return false;
@@ -101,7 +101,7 @@ std::vector<SeriesColumn> PackingExperiment::columns() const { return series_col
 
 std::vector<double> PackingExperiment::measure(const World& w) const {
   const auto stats = measure_contacts(w);
-  const Surface s = measure_surface(w.discs, 0.0, packing_.length, settle_.column_width_factor * mean_radius(w.discs));
+  const Surface s = measure_surface(w.discs(), 0.0, packing_.length, settle_.column_width_factor * mean_radius(w.discs()));
   double sum = 0;
   int n = 0;
   for (double h : s.height)
@@ -109,11 +109,11 @@ std::vector<double> PackingExperiment::measure(const World& w) const {
       sum += h;
       ++n;
     }
-  const PackingSample sample{.step = static_cast<double>(w.step),
-                             .time = w.time,
+  const PackingSample sample{.step = static_cast<double>(w.step()),
+                             .time = w.time(),
                              .phase = static_cast<double>(phase_),
-                             .n_discs = static_cast<double>(w.discs.size()),
-                             .n_clusters = static_cast<double>(w.clusters.size()),
+                             .n_discs = static_cast<double>(w.discs().size()),
+                             .n_clusters = static_cast<double>(w.clusters().size()),
                              .kinetic_energy = mean_kinetic_energy(w),
                              .contacts_per_disc = stats.contacts_per_disc,
                              .max_overlap = stats.max_overlap,
@@ -136,12 +136,12 @@ void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {
   meta.numbers["d_max"] = packing_.d_max;
   meta.numbers["seed"] = static_cast<double>(packing_.seed);
   if (!config_toml_.empty()) meta.strings[kConfigAttr] = config_toml_;
-  const Surface s = measure_surface(w.discs, 0.0, packing_.length,
-                                    settle_.column_width_factor * mean_radius(w.discs));
+  const Surface s = measure_surface(w.discs(), 0.0, packing_.length,
+                                    settle_.column_width_factor * mean_radius(w.discs()));
   SnapshotFrame frame;
-  frame.step = static_cast<std::int64_t>(w.step);
-  frame.time = w.time;
-  frame.discs = &w.discs;
+  frame.step = static_cast<std::int64_t>(w.step());
+  frame.time = w.time();
+  frame.discs = &w.discs();
   for (std::size_t k = 0; k < s.height.size(); ++k) frame.attrs[fmt::format("surface_{:05d}", k)] = s.height[k];
   frame.attrs["column_width"] = s.width;
   write_single_snapshot(out_dir / "packing.h5", meta, frame);
@@ -149,8 +149,8 @@ void PackingExperiment::finish(World& w, const std::filesystem::path& out_dir) {
 
 std::vector<SummaryValue> PackingExperiment::summary(const World& w) const {
   const auto stats = measure_contacts(w);
-  const Surface s = measure_surface(w.discs, 0.0, packing_.length,
-                                    settle_.column_width_factor * mean_radius(w.discs));
+  const Surface s = measure_surface(w.discs(), 0.0, packing_.length,
+                                    settle_.column_width_factor * mean_radius(w.discs()));
   // Column heights of the settled top: their mean is the layer's thickness, their spread its roughness.
   double sum = 0, sum2 = 0;
   int n = 0;
@@ -160,13 +160,13 @@ std::vector<SummaryValue> PackingExperiment::summary(const World& w) const {
   const double spread = n ? std::sqrt(std::max(0.0, sum2 / n - mean * mean)) : 0.0;
   // Cluster members touch without overlapping, so the disc areas add up to the solid area.
   double solid = 0;
-  for (double r : w.discs.radius) solid += std::numbers::pi * r * r;
+  for (double r : w.discs().radius) solid += std::numbers::pi * r * r;
   const double bulk = packing_.length * mean;
   const double fraction = bulk > 0 ? solid / bulk : 0.0;
-  return {{"time", "model time when the layer came to rest [sqrt(d/g)]", w.time},
-          {"steps", "time steps taken [-]", static_cast<double>(w.step)},
-          {"n_discs", "number of discs [-]", static_cast<double>(w.discs.size())},
-          {"n_clusters", "number of rigid clusters [-]", static_cast<double>(w.clusters.size())},
+  return {{"time", "model time when the layer came to rest [sqrt(d/g)]", w.time()},
+          {"steps", "time steps taken [-]", static_cast<double>(w.step())},
+          {"n_discs", "number of discs [-]", static_cast<double>(w.discs().size())},
+          {"n_clusters", "number of rigid clusters [-]", static_cast<double>(w.clusters().size())},
           {"thickness", "mean height of the upper surface: the settled layer's thickness [d]", mean},
           {"roughness", "standard deviation of the upper surface's column heights [d]", spread},
           {"solid_fraction", "disc area / (layer.length * thickness) [-]", fraction},

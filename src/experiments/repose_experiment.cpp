@@ -28,14 +28,14 @@ void ReposeExperiment::setup(World& w) {
   p.length = spec_.size;
   p.thickness = spec_.size;
   settle_layer(w, p, spec_.settle);
-  const Surface s = measure_surface(w.discs, 0.0, spec_.size, spec_.column_width_factor * mean_radius(w.discs));
+  const Surface s = measure_surface(w.discs(), 0.0, spec_.size, spec_.column_width_factor * mean_radius(w.discs()));
   double sum = 0;
   int n = 0;
   for (double h : s.height)
     if (std::isfinite(h)) { sum += h; ++n; }
   top_ = n ? sum / n : spec_.size;
 
-  auto& d = w.discs;
+  auto& d = w.discs();
   std::vector<std::uint8_t> fix(d.size(), 0);
   if (spec_.variant == ReposeVariant::Slump) {
     // The whole right wall goes; the lowermost particles are held so the block cannot slide out.
@@ -56,13 +56,13 @@ void ReposeExperiment::setup(World& w) {
 }
 
 double ReposeExperiment::mean_kinetic_energy(const World& w) const {
-  if (w.discs.size() == 0) return 0;
-  return w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitDiscMass;
+  if (w.discs().size() == 0) return 0;
+  return w.kinetic_energy() / static_cast<double>(w.discs().size()) / kUnitDiscMass;
 }
 
 // Particles that crossed the open side (or fell below the floor's end) leave the system.
 void ReposeExperiment::remove_escaped(World& w) {
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   std::vector<std::uint8_t> flags(d.size(), 0);
   bool any = false;
   for (std::size_t i = 0; i < d.size(); ++i) {
@@ -75,19 +75,19 @@ void ReposeExperiment::remove_escaped(World& w) {
 bool ReposeExperiment::advance(World& w) {
   if (at_rest_) return false;
   w.advance();
-  if (w.step % kCheckEvery != 0) return true;
+  if (w.step() % kCheckEvery != 0) return true;
   remove_escaped(w);
-  if (w.time < spec_.min_time) return true;
+  if (w.time() < spec_.min_time) return true;
   if (mean_kinetic_energy(w) < spec_.ke_threshold) {
     at_rest_ = true;
-    rest_time_ = w.time;
+    rest_time_ = w.time();
     return false;
   }
-  return w.time < spec_.max_time;
+  return w.time() < spec_.max_time;
 }
 
 Surface ReposeExperiment::surface(const World& w) const {
-  return measure_surface(w.discs, 0.0, spec_.size, spec_.column_width_factor * mean_radius(w.discs));
+  return measure_surface(w.discs(), 0.0, spec_.size, spec_.column_width_factor * mean_radius(w.discs()));
 }
 
 ProfileFit ReposeExperiment::profile(const World& w) const {
@@ -134,9 +134,9 @@ std::vector<double> ReposeExperiment::measure(const World& w) const {
   const ProfileFit f = profile(w);
   const auto stats = measure_contacts(w);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const auto n = static_cast<std::int64_t>(w.discs.size());
-  const ReposeSample sample{.step = static_cast<double>(w.step),
-                            .time = w.time,
+  const auto n = static_cast<std::int64_t>(w.discs().size());
+  const ReposeSample sample{.step = static_cast<double>(w.step()),
+                            .time = w.time(),
                             .n_discs = static_cast<double>(n),
                             .n_removed = static_cast<double>(initial_discs_ - n),
                             .kinetic_energy = mean_kinetic_energy(w),
@@ -154,7 +154,7 @@ std::vector<double> ReposeExperiment::measure(const World& w) const {
 std::vector<SummaryValue> ReposeExperiment::summary(const World& w) const {
   const ProfileFit f = profile(w);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const auto n = static_cast<double>(w.discs.size());
+  const auto n = static_cast<double>(w.discs().size());
   return {{"angle_deg", "angle of repose: slope of the straight-line fit of the surface at rest [deg]",
            f.valid() ? -std::atan(f.slope) * kDegPerRad : nan},
           {"angle_r2", "coefficient of determination of that line [-]", f.valid() ? f.r2 : nan},
@@ -164,7 +164,7 @@ std::vector<SummaryValue> ReposeExperiment::summary(const World& w) const {
           {"slope_length", "horizontal extent of the fitted slope [d]", f.valid() ? f.x_hi - f.x_lo : nan},
           {"removed_fraction", "fraction of the discs that left the box [-]", 1.0 - n / static_cast<double>(initial_discs_)},
           {"at_rest", "1 if the material came to rest, 0 if repose.max_time ended the run [-]", at_rest_ ? 1.0 : 0.0},
-          {"time_to_rest", "model time from opening to rest [sqrt(d/g)]", at_rest_ ? rest_time_ : w.time}};
+          {"time_to_rest", "model time from opening to rest [sqrt(d/g)]", at_rest_ ? rest_time_ : w.time()}};
 }
 
 void ReposeExperiment::finish(World& w, const std::filesystem::path& out_dir) {
@@ -193,13 +193,13 @@ void ReposeExperiment::load(const ArchiveReader& in) {
 }
 
 std::string ReposeExperiment::status(const World& w) const {
-  return fmt::format("{} discs, KE/disc {:.2e}", w.discs.size(), mean_kinetic_energy(w));
+  return fmt::format("{} discs, KE/disc {:.2e}", w.discs().size(), mean_kinetic_energy(w));
 }
 
 double ReposeExperiment::fraction_done(const World& w) const {
   // Unknown until rest; the kinetic energy falls towards the threshold over decades.
   const double ke = mean_kinetic_energy(w);
-  if (w.time < spec_.min_time || ke <= 0) return -1.0;
+  if (w.time() < spec_.min_time || ke <= 0) return -1.0;
   return std::clamp(std::log(ke) / std::log(spec_.ke_threshold), 0.0, 0.99);
 }
 

@@ -14,8 +14,8 @@ namespace orogen {
 namespace {
 
 double mean_kinetic_energy(const World& w) {
-  if (w.discs.size() == 0) return 0;
-  return w.kinetic_energy() / static_cast<double>(w.discs.size()) / kUnitDiscMass;
+  if (w.discs().size() == 0) return 0;
+  return w.kinetic_energy() / static_cast<double>(w.discs().size()) / kUnitDiscMass;
 }
 
 }  // namespace
@@ -23,9 +23,9 @@ double mean_kinetic_energy(const World& w) {
 bool ScriptedExperiment::advance(World& w) {
   // The output grid's own tolerance, so that the last step lands on the last output.
   const double end = spec_.duration - 1e-9 * spec_.duration / spec_.outputs;
-  if (w.time >= end) return false;
+  if (w.time() >= end) return false;
   w.advance();
-  return w.time < end;
+  return w.time() < end;
 }
 
 namespace {
@@ -52,7 +52,7 @@ constexpr std::array kSeries = {
 std::vector<SeriesColumn> ScriptedExperiment::columns() const { return series_columns(kSeries); }
 
 std::vector<double> ScriptedExperiment::measure(const World& w) const {
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   double x_min = nan, x_max = nan, y_max = nan;
   for (std::size_t i = 0; i < d.size(); ++i) {
@@ -60,10 +60,10 @@ std::vector<double> ScriptedExperiment::measure(const World& w) const {
     x_max = i ? std::max(x_max, d.x[i] + d.radius[i]) : d.x[i] + d.radius[i];
     y_max = i ? std::max(y_max, d.y[i] + d.radius[i]) : d.y[i] + d.radius[i];
   }
-  const ScriptedSample sample{.step = static_cast<double>(w.step),
-                              .time = w.time,
+  const ScriptedSample sample{.step = static_cast<double>(w.step()),
+                              .time = w.time(),
                               .n_discs = static_cast<double>(d.size()),
-                              .n_removed = static_cast<double>(w.removals.size()),
+                              .n_removed = static_cast<double>(w.removals().size()),
                               .kinetic_energy = mean_kinetic_energy(w),
                               .x_min = x_min,
                               .x_max = x_max,
@@ -72,7 +72,7 @@ std::vector<double> ScriptedExperiment::measure(const World& w) const {
 }
 
 std::string ScriptedExperiment::status(const World& w) const {
-  return fmt::format("t = {:.4g} of {:.4g}, {} discs, KE/disc {:.2e}", w.time, spec_.duration, w.discs.size(),
+  return fmt::format("t = {:.4g} of {:.4g}, {} discs, KE/disc {:.2e}", w.time(), spec_.duration, w.discs().size(),
                      mean_kinetic_energy(w));
 }
 
@@ -83,10 +83,10 @@ std::array<double, 4> ScriptedExperiment::view_box(const World& w) const {
   auto take = [&box](double x0, double x1, double y0, double y1) {
     box = {std::min(box[0], x0), std::max(box[1], x1), std::min(box[2], y0), std::max(box[3], y1)};
   };
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   for (std::size_t i = 0; i < d.size(); ++i)
     take(d.x[i] - d.radius[i], d.x[i] + d.radius[i], d.y[i] - d.radius[i], d.y[i] + d.radius[i]);
-  for (const auto& wall : w.walls)
+  for (const auto& wall : w.walls())
     if (wall.enabled)
       take(std::min(wall.ax, wall.bx), std::max(wall.ax, wall.bx), std::min(wall.ay, wall.by),
            std::max(wall.ay, wall.by));

@@ -25,7 +25,7 @@ class ScriptedExperiment final : public Experiment {
   void save(ArchiveWriter&) const override {}       // no state beyond the world
   void load(const ArchiveReader&) override {}
   std::string status(const World& world) const override;
-  double fraction_done(const World& world) const override { return world.time / spec_.duration; }
+  double fraction_done(const World& world) const override { return world.time() / spec_.duration; }
   double h0() const override { return 1.0; }  // no layer: lengths stay in d
   std::array<double, 4> view_box(const World& world) const override;
 

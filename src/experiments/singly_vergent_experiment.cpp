@@ -39,7 +39,7 @@ void SinglyVergentExperiment::setup(World& w) {
   w.set_wall_friction(kBackstop, WallFriction::Smooth, backstop.mu);
   w.set_wall_velocity(kBackstop, -spec_.speed, backstop.vy);
   w.set_wall_ends(kBackstop, backstop.ax, backstop.ay, backstop.bx, std::max(backstop.by, 6.0 * spec_.h0 + 20.0));
-  initial_discs_ = static_cast<std::int64_t>(w.discs.size());
+  initial_discs_ = static_cast<std::int64_t>(w.discs().size());
   start_surface();
   surface_.ledger().entered = disc_area(w);
 }
@@ -65,25 +65,25 @@ bool SinglyVergentExperiment::set_surface_script(SurfaceScript script) {
 // surface go, and the depths below the new surface are measured again.
 void SinglyVergentExperiment::cut_wedge(World& w) {
   const double x_back = w.wall(kBackstop).ax, slope = std::tan(spec_.initial_slope);
-  std::vector<std::uint8_t> above(w.discs.size(), 0);
-  for (std::size_t i = 0; i < w.discs.size(); ++i)
-    above[i] = w.discs.y[i] > spec_.h0 - slope * (x_back - w.discs.x[i]);
+  std::vector<std::uint8_t> above(w.discs().size(), 0);
+  for (std::size_t i = 0; i < w.discs().size(); ++i)
+    above[i] = w.discs().y[i] > spec_.h0 - slope * (x_back - w.discs().x[i]);
   w.remove(above, RemovalReason::Other);
-  record_initial_state(w, 0.0, spec_.length, spec_.column_width_factor * mean_radius(w.discs));
+  record_initial_state(w, 0.0, spec_.length, spec_.column_width_factor * mean_radius(w.discs()));
 }
 
 bool SinglyVergentExperiment::advance(World& w) {
   if (shortening(w) >= spec_.shortening) return false;
   w.advance();
   // The laws act between the far wall and the backstop.
-  if (surface_.updates_at(w)) surface_.update(w, 0.0, w.wall(kBackstop).ax, spec_.surface.every * w.dt);
-  if (w.step % kHousekeepingEvery == 0) remove_strays(w);
+  if (surface_.updates_at(w)) surface_.update(w, 0.0, w.wall(kBackstop).ax, spec_.surface.every * w.dt());
+  if (w.step() % kHousekeepingEvery == 0) remove_strays(w);
   return true;
 }
 
 // A disc squeezed out through a wall's end would fall for ever.
 void SinglyVergentExperiment::remove_strays(World& w) {
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   std::vector<std::uint8_t> flags(d.size(), 0);
   bool any = false;
   for (std::size_t i = 0; i < d.size(); ++i) {
@@ -100,7 +100,7 @@ SinglyVergentShape SinglyVergentExperiment::shape(const World& w) const {
   SinglyVergentShape g;
   // The crust without the deposits (a filled foreland is not the wedge).
   const std::unique_ptr<Discs> crust = crust_discs(surface_, spec_.surface.deposition, w, {});
-  const auto& d = crust ? *crust : w.discs;
+  const auto& d = crust ? *crust : w.discs();
   g.backstop = w.wall(kBackstop).ax;
   const Surface s = measure_surface(d, 0.0, g.backstop, spec_.column_width_factor * mean_radius(d));
   // The wedge: surface columns raised by a disc diameter, contiguous from the backstop (gaps of
@@ -187,8 +187,8 @@ std::vector<double> SinglyVergentExperiment::measure(const World& w) const {
   const WallContactStats base = w.wall_contact_stats(w.wall_index(kBoxFloor));
   const double h0 = spec_.h0;
   auto or_nan = [&](double v) { return g.has_wedge ? v : kNaN; };
-  const SinglyVergentSample sample{.step = static_cast<double>(w.step),
-                                   .time = w.time,
+  const SinglyVergentSample sample{.step = static_cast<double>(w.step()),
+                                   .time = w.time(),
                                    .shortening = shortening(w),
                                    .backstop = g.backstop / h0,
                                    .front = or_nan(g.front / h0),
@@ -199,7 +199,7 @@ std::vector<double> SinglyVergentExperiment::measure(const World& w) const {
                                    .taper_back = or_nan(g.taper_back * kDegPerRad),
                                    .taper_mean = or_nan(g.taper_mean * kDegPerRad),
                                    .slip_base = base.slip_fraction(),
-                                   .n_discs = static_cast<double>(w.discs.size())};
+                                   .n_discs = static_cast<double>(w.discs().size())};
   auto out = series_values(kSeries, sample);
   if (surface_.active())
     for (double v : ledger_values(surface_, w)) out.push_back(v);

@@ -63,7 +63,7 @@ class SinglyVergentExperiment final : public Experiment {
   }
 
   // Backstop displacement / h0.
-  double shortening(const World& world) const { return spec_.speed * world.time / spec_.h0; }
+  double shortening(const World& world) const { return spec_.speed * world.time() / spec_.h0; }
   SinglyVergentShape shape(const World& world) const;
   bool set_surface_script(SurfaceScript script) override;
 

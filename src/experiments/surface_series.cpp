@@ -28,9 +28,9 @@ std::vector<double> ledger_values(const SurfaceProcesses& surface, const World& 
 }
 
 SnapshotField deposition_field(const SurfaceProcesses& surface, const World& w) {
-  SnapshotField laid{"deposition_time", std::vector<double>(w.discs.size()), "sqrt(d/g)",
+  SnapshotField laid{"deposition_time", std::vector<double>(w.discs().size()), "sqrt(d/g)",
                      "model time the disc was laid as sediment (surface.deposition); NaN: not a deposit"};
-  for (std::size_t i = 0; i < w.discs.size(); ++i) laid.values[i] = surface.deposition_time(w.discs.id[i]);
+  for (std::size_t i = 0; i < w.discs().size(); ++i) laid.values[i] = surface.deposition_time(w.discs().id[i]);
   return laid;
 }
 
@@ -38,7 +38,7 @@ std::unique_ptr<Discs> crust_discs(const SurfaceProcesses& surface, bool deposit
                                    const BaseHeight& base) {
   if (!deposition && !base) return nullptr;
   auto out = std::make_unique<Discs>();
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   for (std::size_t i = 0; i < d.size(); ++i)
     if (std::isnan(surface.deposition_time(d.id[i])))
       out->add(d.id[i], d.x[i], d.y[i] - (base ? base(d.x[i]) : 0.0), d.radius[i]);

@@ -30,15 +30,15 @@ ConfigTimeStep config_time_step(const Config& c) {
 }
 
 void check_world_time_step(const Config& c, const World& w) {
-  if (w.dt <= w.stable_dt()) return;
-  const auto& r = w.discs.radius;
+  if (w.dt() <= w.stable_dt()) return;
+  const auto& r = w.discs().radius;
   const double d_small = 2.0 * *std::min_element(r.begin(), r.end());
   throw config_error(c.sources_of({"particles.d_min", "time.dt"}), "particles.d_min",
                      fmt::format("{}", c.get_float("particles.d_min")),
                      fmt::format("the setup built discs down to diameter {:.6g}, for which the time step dt = {:.6g} "
                                  "exceeds the stability limit {:.6g}: set particles.d_min to at most {:.6g} (the "
                                  "time step follows it) or give a smaller time.dt; from {}",
-                                 d_small, w.dt, w.stable_dt(), d_small, c.describe({"particles.d_min", "time.dt"})));
+                                 d_small, w.dt(), w.stable_dt(), d_small, c.describe({"particles.d_min", "time.dt"})));
 }
 
 }  // namespace orogen

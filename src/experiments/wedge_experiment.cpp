@@ -44,10 +44,10 @@ void WedgeExperiment::setup(World& w) {
   } else {
     // Settle the tile in a world of its own with the same engine settings.
     World box;
-    box.law = w.law;
-    box.dt = w.dt;
-    box.neighbors.skin = w.neighbors.skin;
-    box.sort_every = w.sort_every;
+    box.set_contact_law(w.law());
+    box.set_time_step(w.dt());
+    box.set_neighbor_skin(w.neighbors().skin);
+    box.set_sort_every(w.sort_every());
     PackingSpec p = spec_.packing;
     // A wider box, cut back to the tile length away from its walls (see cut_tile).
     p.length = spec_.tile_length * spec_.h0 + 2 * tile_margin();
@@ -103,10 +103,10 @@ void WedgeExperiment::build_layer(World& w) {
   }
   slab_left_ = left;
   if (base_.active()) base_.set_reference_load(layer_load(w));
-  entered_ = static_cast<std::int64_t>(w.discs.size());
+  entered_ = static_cast<std::int64_t>(w.discs().size());
   start_surface();
-  count_entered(w, 0, w.discs.size());
-  t_start_ = w.time;
+  count_entered(w, 0, w.discs().size());
+  t_start_ = w.time();
   update_windows(w);
   attach(w);
 }
@@ -114,7 +114,7 @@ void WedgeExperiment::build_layer(World& w) {
 void WedgeExperiment::attach(World& w) {
   find_base_walls(w);
   if (spec_.basal == BasalCondition::ConstantVelocity)
-    w.hooks.add(Stage::AfterForces, std::string(kPinHook), [this](World& world) { pin_retro_base(world); });
+    w.hooks().add(Stage::AfterForces, std::string(kPinHook), [this](World& world) { pin_retro_base(world); });
 }
 
 // Keeps kinematic slab beyond the pro window: stamps a new tile when less than
@@ -122,17 +122,17 @@ void WedgeExperiment::attach(World& w) {
 // caught up within a step or two; the new tiles turn dynamic at the next window update, as
 // all inflow does.)
 void WedgeExperiment::feed_slab(World& w) {
-  slab_left_ += spec_.v * w.dt;
+  slab_left_ += spec_.v * w.dt();
   if (slab_left_ <= window_pro_ - slab_reserve()) return;
   slab_left_ -= tile_.length;
-  const std::size_t first_cluster = w.clusters.size();
+  const std::size_t first_cluster = w.clusters().size();
   const auto [first, last] = stamp_tile(w, tile_, slab_left_, std::numeric_limits<double>::infinity(), on_base(w));
   apply_units(w, first, last, spec_.packing.seed);
   w.edit_motion([&](MotionEdit& e) {
     for (auto i = first; i < last; ++i)
-      if (w.discs.cluster[i] < 0) e.disc(i, Motion::Kinematic, spec_.v, riding_speed(w, w.discs.x[i], spec_.v));
-    for (std::size_t k = first_cluster; k < w.clusters.size(); ++k)
-      e.cluster(k, Motion::Kinematic, spec_.v, riding_speed(w, w.clusters.x[k], spec_.v));
+      if (w.discs().cluster[i] < 0) e.disc(i, Motion::Kinematic, spec_.v, riding_speed(w, w.discs().x[i], spec_.v));
+    for (std::size_t k = first_cluster; k < w.clusters().size(); ++k)
+      e.cluster(k, Motion::Kinematic, spec_.v, riding_speed(w, w.clusters().x[k], spec_.v));
   });
   entered_ += static_cast<std::int64_t>(last - first);
   count_entered(w, first, last);
@@ -157,13 +157,13 @@ bool WedgeExperiment::set_surface_script(SurfaceScript script) {
 
 void WedgeExperiment::count_entered(const World& w, std::size_t first, std::size_t last) {
   for (std::size_t i = first; i < last; ++i)
-    surface_.ledger().entered += std::numbers::pi * w.discs.radius[i] * w.discs.radius[i];
+    surface_.ledger().entered += std::numbers::pi * w.discs().radius[i] * w.discs().radius[i];
 }
 
 // Active region: between the windows that follow the deformation fronts; kinematic slab
 // outside (moving with the pro plate, or at rest on the retro side); pinned discs at rest.
 void WedgeExperiment::update_windows(World& w) {
-  auto& d = w.discs;
+  auto& d = w.discs();
   const double front_y = spec_.h0 + spec_.packing.d_max;
   double dp = 0, dr = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
@@ -173,7 +173,7 @@ void WedgeExperiment::update_windows(World& w) {
   }
   window_pro_ = std::min(window_pro_, dp - spec_.window * spec_.h0);
   window_retro_ = std::min(x_end_ + 1.0, std::max(window_retro_, dr + spec_.window * spec_.h0));
-  const auto ids = static_cast<std::size_t>(w.next_disc_id);
+  const auto ids = static_cast<std::size_t>(w.next_disc_id());
   if (pinned_.size() < ids) pinned_.resize(ids, 0);
   // Kinematic bodies ride on the base: vy keeps them on it until the next update (0: rigid base).
   auto wanted = [&](double x, bool pinned, double& vx, double& vy) {
@@ -183,7 +183,7 @@ void WedgeExperiment::update_windows(World& w) {
     if (x < window_pro_) { vx = spec_.v; vy = riding_speed(w, x, vx); return Motion::Kinematic; }
     return Motion::Dynamic;
   };
-  const auto& c = w.clusters;
+  const auto& c = w.clusters();
   w.edit_motion([&](MotionEdit& e) {
     for (std::size_t i = 0; i < d.size(); ++i) {
       if (d.cluster[i] >= 0) continue;
@@ -205,12 +205,12 @@ void WedgeExperiment::update_windows(World& w) {
 // slip) from the step it first touches: a hook after the forces of every step, so it does not
 // move in that step's integration (docs/model.md, "Constant velocity").
 void WedgeExperiment::pin_retro_base(World& w) {
-  const auto ids = static_cast<std::size_t>(w.next_disc_id);
+  const auto ids = static_cast<std::size_t>(w.next_disc_id());
   if (pinned_.size() < ids) pinned_.resize(ids, 0);
   w.edit_motion([&](MotionEdit& e) {
     for (const std::size_t retro : retro_walls_)
       w.for_each_touching(retro, [&](std::size_t i) {
-        pinned_[static_cast<std::size_t>(w.discs.id[i])] = 1;
+        pinned_[static_cast<std::size_t>(w.discs().id[i])] = 1;
         e.body_of(i, Motion::Kinematic);
       });
   });
@@ -226,7 +226,7 @@ void WedgeExperiment::erode(World& w) {
 }
 
 void WedgeExperiment::remove_strays(World& w) {
-  const auto& d = w.discs;
+  const auto& d = w.discs();
   std::vector<std::uint8_t> flags(d.size(), 0);
   bool any = false;
   for (std::size_t i = 0; i < d.size(); ++i) {
@@ -243,18 +243,18 @@ bool WedgeExperiment::advance(World& w) {
   if (convergence(w) >= spec_.s_end) return false;
   w.advance();
   feed_slab(w);
-  if (spec_.erosion_height > 0 && w.step % static_cast<std::uint64_t>(spec_.erosion_every) == 0) erode(w);
+  if (spec_.erosion_height > 0 && w.step() % static_cast<std::uint64_t>(spec_.erosion_every) == 0) erode(w);
   if (surface_.updates_at(w)) {
-    surface_.update(w, window_pro_ - spec_.h0, x_end_, spec_.surface.every * w.dt, on_base(w));
+    surface_.update(w, window_pro_ - spec_.h0, x_end_, spec_.surface.every * w.dt(), on_base(w));
   }
   if (base_.active()) {
-    if (w.step % static_cast<std::uint64_t>(spec_.isostasy.every) == 0) {
-      base_.solve(w.discs, slab_left_, x_end_, w.step);
+    if (w.step() % static_cast<std::uint64_t>(spec_.isostasy.every) == 0) {
+      base_.solve(w.discs(), slab_left_, x_end_, w.step());
       check_base_depth(w);
     }
     place_base(w);
   }
-  if (w.step % kHousekeepingEvery == 0) {
+  if (w.step() % kHousekeepingEvery == 0) {
     remove_strays(w);
     update_windows(w);
   }
@@ -330,7 +330,7 @@ std::vector<double> WedgeExperiment::measure(const World& w) const {
 
 WedgeSample WedgeExperiment::sample(const World& w) const {
   const std::unique_ptr<Discs> without_sediment = crust(w);
-  const Discs& measured = without_sediment ? *without_sediment : w.discs;
+  const Discs& measured = without_sediment ? *without_sediment : w.discs();
   const Surface s = surface(measured);
   // A raised stretch of surface counts as deformation from h0/2 wide, gaps up to h0/4 bridged
   // (wedge.fronts = surface).
@@ -340,17 +340,17 @@ WedgeSample WedgeExperiment::sample(const World& w) const {
   const WallContactStats pro = base_stats(w, pro_walls_);
   const WallContactStats retro = base_stats(w, retro_walls_);
   std::size_t active = 0, eroded = 0, left = 0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) active += w.discs.is_dynamic(i);
-  for (const auto& r : w.removals) {
+  for (std::size_t i = 0; i < w.discs().size(); ++i) active += w.discs().is_dynamic(i);
+  for (const auto& r : w.removals()) {
     eroded += is_erosion(r.reason);
     left += r.reason == RemovalReason::LeftDomain;
   }
   const double h0 = spec_.h0;
-  return {.step = static_cast<double>(w.step), .time = w.time, .S = convergence(w), .H = g.h / h0, .Dp = g.dp / h0,
+  return {.step = static_cast<double>(w.step()), .time = w.time(), .S = convergence(w), .H = g.h / h0, .Dp = g.dp / h0,
           .Mp = g.mp / h0, .Dr = g.dr / h0, .Mr = g.mr / h0, .T = g.x_peak / h0, .alpha = g.alpha * kDegPerRad,
           .beta = g.beta * kDegPerRad, .alpha_fit = g.alpha_fit * kDegPerRad, .beta_fit = g.beta_fit * kDegPerRad,
           .slip_pro = pro.slip_fraction(), .slip_retro = retro.slip_fraction(),
-          .n_active = static_cast<double>(active), .n_discs = static_cast<double>(w.discs.size()),
+          .n_active = static_cast<double>(active), .n_discs = static_cast<double>(w.discs().size()),
           .n_eroded = static_cast<double>(eroded), .n_left = static_cast<double>(left),
           .n_entered = static_cast<double>(entered_), .window_pro = window_pro_ / h0,
           .window_retro = window_retro_ / h0};
@@ -403,20 +403,20 @@ void WedgeExperiment::load(const ArchiveReader& in) {
 void WedgeExperiment::adopt_branch_config(World& w) const {
   for (const auto& [walls, mu] : {std::pair{&pro_walls_, spec_.mu_bp}, std::pair{&retro_walls_, spec_.mu_br}})
     for (const std::size_t k : *walls) {
-      const std::string name = w.walls[k].name;
-      w.set_wall_friction(name, w.walls[k].friction, mu);
+      const std::string name = w.walls()[k].name;
+      w.set_wall_friction(name, w.walls()[k].friction, mu);
       w.set_wall_weakening(name, spec_.base_weakening);
     }
 }
 
 std::string WedgeExperiment::status(const World& w) const {
   std::size_t active = 0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) active += w.discs.is_dynamic(i);
+  for (std::size_t i = 0; i < w.discs().size(); ++i) active += w.discs().is_dynamic(i);
   return fmt::format("S {:.2f}/{:.1f}, {} active discs", convergence(w), spec_.s_end, active);
 }
 
 std::array<double, 4> WedgeExperiment::view_box(const World& w) const {
-  const double deepest = base_.active() ? std::max(0.0, base_.shape(w.step).deepest) : 0.0;
+  const double deepest = base_.active() ? std::max(0.0, base_.shape(w.step()).deepest) : 0.0;
   return {window_pro_ + spec_.window * spec_.h0 - 2 * spec_.h0, x_end_ + 0.5, -0.5 - deepest, 4.0 * spec_.h0};
 }
 

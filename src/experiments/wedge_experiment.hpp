@@ -88,7 +88,7 @@ class WedgeExperiment final : public Experiment {
   bool set_surface_script(SurfaceScript script) override;
 
   // Normalised convergence S = v t / h0 since the plates started.
-  double convergence(const World& world) const { return spec_.v * (world.time - t_start_) / spec_.h0; }
+  double convergence(const World& world) const { return spec_.v * (world.time() - t_start_) / spec_.h0; }
 
  private:
   void build_layer(World& world);

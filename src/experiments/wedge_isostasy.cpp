@@ -29,51 +29,51 @@ void WedgeExperiment::start_isostasy() {
 double WedgeExperiment::layer_load(const World& w) const {
   const double lo = slab_left_ + spec_.h0, hi = x_end_ - spec_.h0;
   double area = 0;
-  for (std::size_t i = 0; i < w.discs.size(); ++i)
-    if (w.discs.x[i] >= lo && w.discs.x[i] < hi) area += std::numbers::pi * w.discs.radius[i] * w.discs.radius[i];
+  for (std::size_t i = 0; i < w.discs().size(); ++i)
+    if (w.discs().x[i] >= lo && w.discs().x[i] < hi) area += std::numbers::pi * w.discs().radius[i] * w.discs().radius[i];
   return area / (hi - lo);
 }
 
 void WedgeExperiment::find_base_walls(const World& w) {
   pro_walls_.clear();
   retro_walls_.clear();
-  for (std::size_t k = 0; k < w.walls.size(); ++k) {
-    if (names_base(w.walls[k].name, "pro_base")) pro_walls_.push_back(k);
-    if (names_base(w.walls[k].name, "retro_base")) retro_walls_.push_back(k);
+  for (std::size_t k = 0; k < w.walls().size(); ++k) {
+    if (names_base(w.walls()[k].name, "pro_base")) pro_walls_.push_back(k);
+    if (names_base(w.walls()[k].name, "retro_base")) retro_walls_.push_back(k);
   }
 }
 
 void WedgeExperiment::place_base(World& w) const {
-  if (w.step > base_.move_end()) return;  // where the last move left it
-  const std::vector<double> h = base_.heights(w.step);
+  if (w.step() > base_.move_end()) return;  // where the last move left it
+  const std::vector<double> h = base_.heights(w.step());
   const std::vector<double>& x = base_.nodes();
-  const Wall& far = w.walls[pro_walls_.front()];
+  const Wall& far = w.walls()[pro_walls_.front()];
   w.set_wall_ends(pro_walls_.front(), far.ax, h.front(), x.front(), h.front());
   // The segments follow the far plate in wall order, pro side then retro side.
   std::size_t k = 0;
   for (const auto* walls : {&pro_walls_, &retro_walls_})
     for (std::size_t j = walls == &pro_walls_ ? 1 : 0; j < walls->size(); ++j, ++k) {
-      const Wall& s = w.walls[(*walls)[j]];
+      const Wall& s = w.walls()[(*walls)[j]];
       w.set_wall_ends((*walls)[j], s.ax, h[k], s.bx, h[k + 1]);
     }
-  const std::size_t end = w.walls.size() - 1;  // the retro end, after the segments
-  const Wall& e = w.walls[end];
-  w.set_wall_ends(end, e.ax, base_.height(x_end_, w.step) - 1.0, e.bx, e.by);
+  const std::size_t end = w.walls().size() - 1;  // the retro end, after the segments
+  const Wall& e = w.walls()[end];
+  w.set_wall_ends(end, e.ax, base_.height(x_end_, w.step()) - 1.0, e.bx, e.by);
 }
 
 double WedgeExperiment::base_height(const World& w, double x) const {
-  return base_.active() ? base_.height(x, w.step) : 0.0;
+  return base_.active() ? base_.height(x, w.step()) : 0.0;
 }
 
 BaseHeight WedgeExperiment::on_base(const World& w) const {
   if (!base_.active()) return {};
-  return [this, &w](double x) { return base_.height(x, w.step); };
+  return [this, &w](double x) { return base_.height(x, w.step()); };
 }
 
 double WedgeExperiment::riding_speed(const World& w, double x, double vx) const {
   if (!base_.active()) return 0.0;
-  const double dt = static_cast<double>(kHousekeepingEvery) * w.dt;
-  return (base_.height(x + vx * dt, w.step + kHousekeepingEvery) - base_.height(x, w.step)) / dt;
+  const double dt = static_cast<double>(kHousekeepingEvery) * w.dt();
+  return (base_.height(x + vx * dt, w.step() + kHousekeepingEvery) - base_.height(x, w.step())) / dt;
 }
 
 WallContactStats WedgeExperiment::base_stats(const World& w, const std::vector<std::size_t>& walls) const {
@@ -92,7 +92,7 @@ void WedgeExperiment::check_base_depth(const World& w) const {
   throw InstabilityError(fmt::format(
       "the base would sink {:.3g} h0 at x = {:.3g} h0 under the load on it (step {}), deeper than {} h0: the "
       "mantle under it is too light for this wedge (isostasy.mantle_density = {})",
-      s.deepest / spec_.h0, s.x_deepest / spec_.h0, w.step, kDeepestBase, spec_.isostasy.mantle_density));
+      s.deepest / spec_.h0, s.x_deepest / spec_.h0, w.step(), kDeepestBase, spec_.isostasy.mantle_density));
 }
 
 const std::vector<SeriesColumn>& WedgeExperiment::isostasy_columns() {
@@ -110,9 +110,9 @@ const std::vector<SeriesColumn>& WedgeExperiment::isostasy_columns() {
 
 std::vector<double> WedgeExperiment::isostasy_values(const World& w, double dp, double dr) const {
   const double h0 = spec_.h0;
-  const IsostaticBase::Shape s = base_.shape(w.step);
-  return {base_.height(0.0, w.step) / h0, s.deepest / h0, s.x_deepest / h0, s.bulge_pro / h0, s.bulge_retro / h0,
-          -base_.height(dp * h0, w.step) / h0, -base_.height(dr * h0, w.step) / h0};
+  const IsostaticBase::Shape s = base_.shape(w.step());
+  return {base_.height(0.0, w.step()) / h0, s.deepest / h0, s.x_deepest / h0, s.bulge_pro / h0, s.bulge_retro / h0,
+          -base_.height(dp * h0, w.step()) / h0, -base_.height(dr * h0, w.step()) / h0};
 }
 
 }  // namespace orogen

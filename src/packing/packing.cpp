@@ -84,7 +84,7 @@ void add_box(World& w, const PackingSpec& s) {
              .friction = WallFriction::Rough, .mu = s.mu_wall};
   Wall left{.name = std::string(kBoxLeft), .ax = 0.0, .ay = -1.0, .bx = 0.0, .by = top};
   Wall right{.name = std::string(kBoxRight), .ax = s.length, .ay = -1.0, .bx = s.length, .by = top};
-  std::vector<Wall> walls = w.walls;
+  std::vector<Wall> walls = w.walls();
   walls.insert(walls.end(), {floor, left, right});
   w.set_walls(std::move(walls));
 }
@@ -175,17 +175,16 @@ void place_packing(World& w, const PackingSpec& s) {
 }
 
 std::size_t trim_to_thickness(World& w, double thickness) {
-  return w.remove_above(thickness - mean_radius(w.discs), RemovalReason::Other);
+  return w.remove_above(thickness - mean_radius(w.discs()), RemovalReason::Other);
 }
 
 void record_initial_state(World& w, double x_lo, double x_hi, double column_width) {
-  const Surface s = measure_surface(w.discs, x_lo, x_hi, column_width);
-  auto& d = w.discs;
+  const Surface s = measure_surface(w.discs(), x_lo, x_hi, column_width);
+  const auto& d = w.discs();
   for (std::size_t i = 0; i < d.size(); ++i) {
-    d.x0[i] = d.x[i];
-    d.y0[i] = d.y[i];
+    w.set_start_position(i, d.x[i], d.y[i]);
     const double top = s.at(d.x[i]);
-    d.depth0[i] = std::isfinite(top) ? std::max(0.0, top - d.y[i]) : 0.0;
+    w.set_initial_depth(i, std::isfinite(top) ? std::max(0.0, top - d.y[i]) : 0.0);
   }
 }
 

@@ -30,17 +30,17 @@ Tile tile_from_world(const World& w, double length, double thickness) {
   t.length = length;
   t.thickness = thickness;
   // In id order, so that the tile does not depend on how the arrays happen to be sorted.
-  std::vector<std::size_t> order(w.discs.size());
+  std::vector<std::size_t> order(w.discs().size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return w.discs.id[a] < w.discs.id[b]; });
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return w.discs().id[a] < w.discs().id[b]; });
   std::vector<std::int64_t> cluster_ids;
   for (auto i : order) {
-    t.x.push_back(w.discs.x[i]);
-    t.y.push_back(w.discs.y[i]);
-    t.radius.push_back(w.discs.radius[i]);
-    t.theta.push_back(w.discs.theta[i]);
-    t.depth0.push_back(w.discs.depth0[i]);
-    cluster_ids.push_back(w.discs.cluster_id[i]);
+    t.x.push_back(w.discs().x[i]);
+    t.y.push_back(w.discs().y[i]);
+    t.radius.push_back(w.discs().radius[i]);
+    t.theta.push_back(w.discs().theta[i]);
+    t.depth0.push_back(w.discs().depth0[i]);
+    cluster_ids.push_back(w.discs().cluster_id[i]);
   }
   t.group = local_groups(cluster_ids);
   return t;
@@ -124,8 +124,8 @@ std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_
                                         const std::vector<double>& lift) {
   constexpr double kBand = 1.5;  // discs farther than this from a seam cannot touch across it
   std::vector<std::size_t> near;
-  for (std::size_t i = 0; i < w.discs.size(); ++i) {
-    const double x = w.discs.x[i];
+  for (std::size_t i = 0; i < w.discs().size(); ++i) {
+    const double x = w.discs().x[i];
     if (std::fabs(x - x_left) < kBand || std::fabs(x - x_left - t.length) < kBand) near.push_back(i);
   }
   std::vector<std::uint8_t> drop(t.size(), 0);
@@ -141,7 +141,7 @@ std::vector<std::uint8_t> seam_overlaps(const World& w, const Tile& t, double x_
     const double x = x_left + t.x[k];
     if (x + t.radius[k] > x_max) { drop_disc(k); continue; }
     for (auto i : near) {
-      const double dx = w.discs.x[i] - x, dy = w.discs.y[i] - (t.y[k] + lift[k]), r = w.discs.radius[i] + t.radius[k];
+      const double dx = w.discs().x[i] - x, dy = w.discs().y[i] - (t.y[k] + lift[k]), r = w.discs().radius[i] + t.radius[k];
       if (dx * dx + dy * dy >= r * r) continue;
       drop_disc(k);
       break;
@@ -158,17 +158,17 @@ std::pair<std::size_t, std::size_t> stamp_tile(World& w, const Tile& t, double x
                                                const BaseHeight& base) {
   const std::vector<double> lift = lifts(t, x_left, base);
   const auto drop = seam_overlaps(w, t, x_left, x_max, lift);
-  const std::size_t first = w.discs.size();
+  const std::size_t first = w.discs().size();
   std::map<std::int32_t, std::vector<std::size_t>> members;
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (drop[k]) continue;
     const auto i = w.add_disc(x_left + t.x[k], t.y[k] + lift[k], t.radius[k]);
-    w.discs.depth0[i] = t.depth0[k];
-    w.discs.theta[i] = t.theta[k];  // free discs keep their orientation; clusters start at 0
+    w.set_initial_depth(i, t.depth0[k]);
+    w.set_orientation(i, t.theta[k]);  // free discs keep their orientation; clusters start at 0
     if (t.group[k] >= 0) members[t.group[k]].push_back(i);
   }
   for (auto& [group, idx] : members) w.add_cluster(idx);
-  return {first, w.discs.size()};
+  return {first, w.discs().size()};
 }
 
 void save_tile(ArchiveWriter& out, const Tile& t) {

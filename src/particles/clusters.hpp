@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "particles/discs.hpp"
@@ -36,7 +38,13 @@ struct Clusters {
     f("fx", fx); f("fy", fy); f("torque", torque);
     f("mass", mass); f("inv_mass", inv_mass); f("inv_inertia", inv_inertia);
     f("id", id); f("motion", motion); f("members", members);
+  }  // The same list for reading (a const world's arrays).
+  template <class F>
+  void for_each_array(F&& f) const {
+    const_cast<std::remove_const_t<std::remove_pointer_t<decltype(this)>>&>(*this).for_each_array(
+        [&](auto name, auto& v) { f(name, std::as_const(v)); });
   }
+
 
   void compact(std::span<const std::uint8_t> keep);
 };

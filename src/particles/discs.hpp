@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace orogen {
@@ -53,7 +55,13 @@ struct Discs {
     f("body_dx", body_dx); f("body_dy", body_dy); f("motion", motion);
     f("x0", x0); f("y0", y0); f("depth0", depth0);
     f("material", material); f("slip", slip);
+  }  // The same list for reading (a const world's arrays).
+  template <class F>
+  void for_each_array(F&& f) const {
+    const_cast<std::remove_const_t<std::remove_pointer_t<decltype(this)>>&>(*this).for_each_array(
+        [&](auto name, auto& v) { f(name, std::as_const(v)); });
   }
+
 
   // Appends a free, dynamic disc at rest and returns its index.
   std::size_t add(std::int64_t disc_id, double px, double py, double r);

@@ -19,14 +19,14 @@ SnapshotMetadata Run::metadata() const {
   m.strings["experiment"] = config_.get_string("run.experiment");
   m.strings["orogen_version"] = OROGEN_VERSION;
   m.numbers["h0"] = exp_->h0();
-  m.numbers["dt"] = world_.dt;
+  m.numbers["dt"] = world_.dt();
   m.numbers["x_split"] = exp_->x_split();
   m.strings["run_identity"] = identity_;
   m.strings[kConfigAttr] = config_.to_toml();
   if (!branch_from_.empty()) m.strings["branch_from"] = branch_from_;
-  if (!world_.materials.empty()) {  // the names of the `material` dataset's indices, one per line
+  if (!world_.materials().empty()) {  // the names of the `material` dataset's indices, one per line
     std::string names;
-    for (const auto& material : world_.materials.list) names += material.name + "\n";
+    for (const auto& material : world_.materials().list) names += material.name + "\n";
     m.strings["materials_names"] = names;
   }
   return m;
@@ -48,25 +48,25 @@ std::vector<std::string> Run::preamble() const {
 
 void Run::output() {
   SnapshotFrame frame;
-  frame.step = static_cast<std::int64_t>(world_.step);
-  frame.time = world_.time;
-  frame.discs = &world_.discs;
+  frame.step = static_cast<std::int64_t>(world_.step());
+  frame.time = world_.time();
+  frame.discs = &world_.discs();
   for (auto& [name, value] : exp_->scalars(world_)) frame.attrs[name] = value;
   frame.fields = exp_->fields(world_);
   // A branch's output 0 repeats the source's output fields (their units and descriptions are the experiment's).
   for (auto& field : frame.fields)
     if (auto it = branch_fields_.find(field.name); it != branch_fields_.end()) field.values = it->second;
   branch_fields_.clear();
-  for (const auto& w : world_.walls)
+  for (const auto& w : world_.walls())
     if (w.enabled) frame.walls.push_back({w.ax, w.ay, w.bx, w.by});
   frame.groups = contact_output_groups(world_, contact_output_);
   snapshots_->append(frame);
   state_.vtp_digests.push_back(write_vtp_ ? write_vtp(dir_ / vtp_file_name(state_.outputs), frame) : 0);
   series_->add_row(exp_->measure(world_));
   write_event_logs();
-  state_.output_times.push_back(world_.time);
+  state_.output_times.push_back(world_.time());
   ++state_.outputs;
-  last_output_step_ = world_.step;
+  last_output_step_ = world_.step();
   if (!branch_start_) exp_->after_output(world_);  // a branch's state has seen its output already
   branch_start_ = false;
   if (write_vtp_) write_pvd_file();
@@ -98,16 +98,16 @@ void Run::write_pvd_file() {
 }
 
 void Run::write_event_logs() {
-  write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
-  if (world_.materials.any_bonds())
-    write_bond_break_log(dir_ / "bond_breaks.csv", world_.bonds.breaks, world_.bonds.size(), world_.step);
+  write_removal_log(dir_ / "removals.csv", world_.removals(), world_.step());
+  if (world_.materials().any_bonds())
+    write_bond_break_log(dir_ / "bond_breaks.csv", world_.bonds().breaks, world_.bonds().size(), world_.step());
 }
 
 void Run::checkpoint() {
   // The logs first: a kill between the two leaves rows after the old checkpoint, which a resume
   // accepts; the other order would leave a checkpoint whose removals the file lacks. An output
   // of this step has written them already.
-  if (world_.step != last_output_step_) write_event_logs();
+  if (world_.step() != last_output_step_) write_event_logs();
   ArchiveWriter out;
   save_world(out, world_);
   exp_->save(out);

@@ -109,8 +109,8 @@ void Run::reopen_outputs() {
   }
   state_.vtp_digests.resize(static_cast<std::size_t>(state_.outputs), 0);
   if (write_vtp_) write_pvd_file();
-  write_removal_log(dir_ / "removals.csv", world_.removals, world_.step);
-  log().info("resumed at step {} (t = {:.6g}) after output {}", world_.step, world_.time, state_.outputs - 1);
+  write_removal_log(dir_ / "removals.csv", world_.removals(), world_.step());
+  log().info("resumed at step {} (t = {:.6g}) after output {}", world_.step(), world_.time(), state_.outputs - 1);
 }
 
 // A branch's source, replayed: its set-up, then its steps up to output k with what its
@@ -120,19 +120,19 @@ void Run::replay_to(std::int64_t k) {
   auto output = [&] {
     exp_->after_output(world_);
     ++state_.outputs;
-    last_output_step_ = world_.step;
+    last_output_step_ = world_.step();
   };
   output();
   const auto t0 = std::chrono::steady_clock::now();
   while (state_.outputs <= k) {
     // A replay can take as long as its source took: a signal stops it, the set-up report hears it.
-    run_control::between_steps(world_.step,
+    run_control::between_steps(world_.step(),
                                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     if (!exp_->advance(world_)) {
-      if (world_.step != last_output_step_) output();  // a run's last output comes at its end
+      if (world_.step() != last_output_step_) output();  // a run's last output comes at its end
       break;
     }
-    if (world_.time >= static_cast<double>(state_.outputs) * interval_ - 1e-9 * interval_) output();
+    if (world_.time() >= static_cast<double>(state_.outputs) * interval_ - 1e-9 * interval_) output();
   }
   if (state_.outputs <= k) throw std::runtime_error(fmt::format("the replay ended before output {}", k));
 }
@@ -155,7 +155,7 @@ void Run::load_branch(const ArchiveReader& in, const BranchSource& source, const
   exp_->load(in);
   exp_->attach(world_);  // hooks are not state: they come back with the experiment
   exp_->adopt_branch_config(world_);
-  const Discs& d = world_.discs;
+  const Discs& d = world_.discs();
   bool same = d.size() == snap.size();
   for (std::size_t i = 0; same && i < d.size(); ++i)
     same = d.id[i] == snap.id[i] && d.x[i] == snap.field("x")[i] && d.y[i] == snap.field("y")[i] &&
@@ -170,7 +170,7 @@ void Run::load_branch(const ArchiveReader& in, const BranchSource& source, const
   branch_from_ = source.text();
   branch_start_ = true;
   // The next output comes at the next multiple of the interval after the branch's time.
-  output_base_ = std::floor(world_.time / interval_ + 1e-6);
+  output_base_ = std::floor(world_.time() / interval_ + 1e-6);
 }
 
 // The checkpoint must come from a run of this folder's configuration.
@@ -200,8 +200,8 @@ void Run::check_kept_files(std::optional<std::uint64_t> series_digest) {
                  .vtp_digests = state_.vtp_digests,
                  .series_digest = series_digest,
                  .series_columns = {},
-                 .removals = world_.removals,
-                 .step = world_.step};
+                 .removals = world_.removals(),
+                 .step = world_.step()};
   for (const auto& col : exp_->columns()) kept.series_columns.push_back(col.name);
   series_.emplace(check_kept_files_of_run(dir_, kept));
 }

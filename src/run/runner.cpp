@@ -225,7 +225,7 @@ std::optional<int> build_first_state(Run& run, const RunOptions& opt, const std:
     } else {
       run.setup();
       if (opt.before_first_output) run.build_on_setup(opt.before_first_output);
-      else if (run.world().discs.size() == 0)
+      else if (run.world().discs().size() == 0)
         throw UsageError("the set-up made no discs, so the run could only run empty; make the layer larger "
                          "(layer.length, layer.thickness)");
     }
@@ -337,13 +337,13 @@ int run_command(const RunOptions& opt) {
       if (const auto code = build_first_state(run, opt, source, *logger, *console, progress, lock)) return *code;
     if (source)
       logger->info("branch of {} at output {} (step {}, t = {:.6g}), its state {}", source->dir.string(), source->output,
-                   run.world().step, run.world().time,
+                   run.world().step(), run.world().time(),
                    source->at_checkpoint ? "from its checkpoint" : "rebuilt by replaying it from its set-up");
 
     open_outputs(run, opt, from_checkpoint, stored, extending, *logger);
     started = true;
-    logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs.size(),
-                 run.world().clusters.size(), run.world().dt, run.world().stable_dt(), run.world().law.kn);
+    logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs().size(),
+                 run.world().clusters().size(), run.world().dt(), run.world().stable_dt(), run.world().law().kn);
     try {
       if (const int sig = run.loop(progress); sig != 0) return sig < 0 ? kStoppedByHook : 128 + sig;
     } catch (const InstabilityError& e) {

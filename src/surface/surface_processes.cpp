@@ -28,16 +28,16 @@ RemovalReason reason_of(SurfaceLaw law) {
 
 double disc_area(const World& w) {
   double sum = 0;
-  for (double r : w.discs.radius) sum += disc_area_of(r);
+  for (double r : w.discs().radius) sum += disc_area_of(r);
   return sum;
 }
 
 double body_area(const World& w, std::size_t i) {
-  const auto k = w.discs.cluster[i];
-  if (k < 0) return disc_area_of(w.discs.radius[i]);
+  const auto k = w.discs().cluster[i];
+  if (k < 0) return disc_area_of(w.discs().radius[i]);
   double sum = 0;
-  for (const auto m : w.clusters.members[static_cast<std::size_t>(k)])
-    if (m >= 0) sum += disc_area_of(w.discs.radius[static_cast<std::size_t>(m)]);
+  for (const auto m : w.clusters().members[static_cast<std::size_t>(k)])
+    if (m >= 0) sum += disc_area_of(w.discs().radius[static_cast<std::size_t>(m)]);
   return sum;
 }
 
@@ -45,7 +45,7 @@ Surface SurfaceProcesses::columns_of(const World& w, std::int64_t first, std::in
   // Half a column short of the end: measure_surface rounds the count up, and last - first
   // columns must not become one more by round-off.
   const double width = spec_.column_width, x_lo = static_cast<double>(first) * width;
-  return measure_surface(w.discs, x_lo, x_lo + (static_cast<double>(last - first) - 0.5) * width, width);
+  return measure_surface(w.discs(), x_lo, x_lo + (static_cast<double>(last - first) - 0.5) * width, width);
 }
 
 void SurfaceProcesses::cover(std::int64_t first, std::int64_t last) {
@@ -94,7 +94,7 @@ void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt, con
         "from a mean height of {:.4g} to {:.4g} d over the base (lowest column {:.4g} d over it) in {:.4g} time units; "
         "lower the surface laws' rates (surface.diffusivity, surface.erodibility, surface.precipitation) or "
         "surface.every",
-        w.step, x_lo, x_hi, mean_before, mean_after, lowest, dt));
+        w.step(), x_lo, x_hi, mean_before, mean_after, lowest, dt));
   accrue_change(carry_, offset, before, h, width, step.lowered);
   ledger_.recycled += step.recycled;
   ledger_.bypassed += step.bypassed;
@@ -111,7 +111,7 @@ std::size_t SurfaceProcesses::pay_removals(World& w, const Surface& s, std::size
   for (std::size_t k = 0; k < s.height.size(); ++k) {
     if (s.top[k] < 0 || carry_.due[offset + k] <= 0) continue;
     const std::size_t i = s.top_index[k];
-    if (w.discs.cluster[i] >= 0 && !clusters.insert(w.discs.cluster[i]).second) continue;  // paid once
+    if (w.discs().cluster[i] >= 0 && !clusters.insert(w.discs().cluster[i]).second) continue;  // paid once
     tops.push_back({offset + k, body_area(w, i), static_cast<std::int64_t>(i)});
   }
   const auto paid = pay_erosion(carry_, tops);
@@ -120,13 +120,13 @@ std::size_t SurfaceProcesses::pay_removals(World& w, const Surface& s, std::size
   std::array<std::unordered_set<std::int64_t>, kSurfaceLaws> ids;
   for (const DueRemoval& r : paid) {
     const auto i = static_cast<std::size_t>(r.id);
-    ids[static_cast<std::size_t>(r.law)].insert(w.discs.id[i]);
+    ids[static_cast<std::size_t>(r.law)].insert(w.discs().id[i]);
     ledger_.eroded[static_cast<std::size_t>(r.law)] += body_area(w, i);
   }
   for (std::size_t law = 0; law < kSurfaceLaws; ++law) {
     if (ids[law].empty()) continue;
-    std::vector<std::uint8_t> flags(w.discs.size(), 0);
-    for (std::size_t i = 0; i < w.discs.size(); ++i) flags[i] = ids[law].count(w.discs.id[i]) ? 1 : 0;
+    std::vector<std::uint8_t> flags(w.discs().size(), 0);
+    for (std::size_t i = 0; i < w.discs().size(); ++i) flags[i] = ids[law].count(w.discs().id[i]) ? 1 : 0;
     w.remove(flags, reason_of(static_cast<SurfaceLaw>(law)));
   }
   return paid.size();
@@ -158,17 +158,17 @@ void SurfaceProcesses::lay_deposits(World& w, std::int64_t first, std::int64_t l
         for (double at : {x - 0.5 * r, x, x + 0.5 * r, x + r}) top = std::max(top, base(at));
         y = top + r;
       }
-      const auto& d = w.discs;
+      const auto& d = w.discs();
       for (std::size_t j = 0; j < d.size(); ++j) {
         const double reach = r + d.radius[j], dx = d.x[j] - x;
         if (std::fabs(dx) >= reach) continue;
         y = std::max(y, d.y[j] + std::sqrt(reach * reach - dx * dx));
       }
       const std::size_t i = w.add_disc(x, y + kPlacementGap, r);
-      if (w.discs.has_materials) w.discs.material[i] = spec_.sediment_material;
-      const auto id = static_cast<std::size_t>(w.discs.id[i]);
+      if (w.discs().has_materials) w.set_material(i, spec_.sediment_material);
+      const auto id = static_cast<std::size_t>(w.discs().id[i]);
       if (deposited_at_.size() <= id) deposited_at_.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
-      deposited_at_[id] = w.time;
+      deposited_at_[id] = w.time();
       owed += disc_area_of(r);
       ledger_.deposited += disc_area_of(r);
       ++deposits_;

@@ -39,7 +39,7 @@ class SurfaceProcesses {
       : spec_(std::move(spec)), radii_(std::move(radii)), seed_(seed) {}
 
   bool active() const { return spec_.has_laws(); }
-  bool updates_at(const World& w) const { return active() && w.step % static_cast<std::uint64_t>(spec_.every) == 0; }
+  bool updates_at(const World& w) const { return active() && w.step() % static_cast<std::uint64_t>(spec_.every) == 0; }
   // One update over the whole columns in [x_lo, x_hi), dt the time since the last, on a base
   // at `base` (empty: flat at y = 0). Throws InstabilityError (exit 3) where the laws would
   // remove the whole layer.

@@ -52,10 +52,10 @@ std::uint64_t bond_seed(std::uint64_t seed, std::int64_t id_a, std::int64_t id_b
 }  // namespace
 
 std::size_t World::make_bonds(std::size_t first, std::size_t last, std::uint64_t seed) {
-  if (!discs.has_materials || !materials.any_bonds() || first >= last) return 0;
+  if (!discs_.has_materials || !materials_.any_bonds() || first >= last) return 0;
   double r_max = 0, gap_max = 0;
-  for (std::size_t i = 0; i < discs.size(); ++i) r_max = std::max(r_max, discs.radius[i]);
-  for (const auto& m : materials.list) gap_max = std::max(gap_max, m.bond.gap);
+  for (std::size_t i = 0; i < discs_.size(); ++i) r_max = std::max(r_max, discs_.radius[i]);
+  for (const auto& m : materials_.list) gap_max = std::max(gap_max, m.bond.gap);
   // Cells as wide as the farthest a bonding pair can be apart: each pair is in neighbouring cells.
   const double cell = 2 * r_max + gap_max;
   // A cell's key: its two indices packed in unsigned arithmetic (no shift of a negative number).
@@ -66,21 +66,21 @@ std::size_t World::make_bonds(std::size_t first, std::size_t last, std::uint64_t
     return cell_key(static_cast<std::int64_t>(std::floor(x / cell)), static_cast<std::int64_t>(std::floor(y / cell)));
   };
   std::unordered_map<std::int64_t, std::vector<std::size_t>> grid;
-  for (std::size_t i = 0; i < discs.size(); ++i)
-    if (materials.list[discs.material[i]].bond.bonds()) grid[key(discs.x[i], discs.y[i])].push_back(i);
-  const double ks_ratio = law.kn > 0 ? law.ks / law.kn : 0.0;
+  for (std::size_t i = 0; i < discs_.size(); ++i)
+    if (materials_.list[discs_.material[i]].bond.bonds()) grid[key(discs_.x[i], discs_.y[i])].push_back(i);
+  const double ks_ratio = law_.kn > 0 ? law_.ks / law_.kn : 0.0;
   // The pairs bonded already (a disc of an earlier call beside the new ones).
   std::unordered_set<std::uint64_t> bonded;
   auto pair_key = [](std::int64_t a, std::int64_t b) {
     return static_cast<std::uint64_t>(a) * 0x9e3779b97f4a7c15ULL ^ static_cast<std::uint64_t>(b);
   };
-  for (std::size_t k = 0; k < bonds.size(); ++k) bonded.insert(pair_key(bonds.id_a[k], bonds.id_b[k]));
+  for (std::size_t k = 0; k < bonds_.size(); ++k) bonded.insert(pair_key(bonds_.id_a[k], bonds_.id_b[k]));
   std::size_t made = 0;
   for (std::size_t i = first; i < last; ++i) {
-    const Material& mi = materials.list[discs.material[i]];
+    const Material& mi = materials_.list[discs_.material[i]];
     if (!mi.bond.bonds()) continue;
-    const auto cx = static_cast<std::int64_t>(std::floor(discs.x[i] / cell));
-    const auto cy = static_cast<std::int64_t>(std::floor(discs.y[i] / cell));
+    const auto cx = static_cast<std::int64_t>(std::floor(discs_.x[i] / cell));
+    const auto cy = static_cast<std::int64_t>(std::floor(discs_.y[i] / cell));
     // The candidates in index order, so that the bonds are made in the same order every time.
     std::vector<std::size_t> near;
     for (std::int64_t gx = cx - 1; gx <= cx + 1; ++gx)
@@ -90,34 +90,34 @@ std::size_t World::make_bonds(std::size_t first, std::size_t last, std::uint64_t
     std::sort(near.begin(), near.end());
     for (const std::size_t j : near) {
       if (j == i || (j >= first && j < last && j < i)) continue;  // a pair of new discs once
-      if (discs.cluster[i] >= 0 && discs.cluster[i] == discs.cluster[j]) continue;  // one body
-      const PairBond pb = pair_bond(mi, materials.list[discs.material[j]]);
+      if (discs_.cluster[i] >= 0 && discs_.cluster[i] == discs_.cluster[j]) continue;  // one body
+      const PairBond pb = pair_bond(mi, materials_.list[discs_.material[j]]);
       if (!pb.bonds) continue;
-      const double gap = std::hypot(discs.x[j] - discs.x[i], discs.y[j] - discs.y[i]) - discs.radius[i] - discs.radius[j];
+      const double gap = std::hypot(discs_.x[j] - discs_.x[i], discs_.y[j] - discs_.y[i]) - discs_.radius[i] - discs_.radius[j];
       if (gap > pb.p.gap) continue;
-      const std::size_t a = discs.id[i] < discs.id[j] ? i : j, b = a == i ? j : i;
-      if (!bonded.empty() && bonded.contains(pair_key(discs.id[a], discs.id[b]))) {
+      const std::size_t a = discs_.id[i] < discs_.id[j] ? i : j, b = a == i ? j : i;
+      if (!bonded.empty() && bonded.contains(pair_key(discs_.id[a], discs_.id[b]))) {
         // The key may collide: a collision is a pair bonded already only if the ids match.
         bool same = false;
-        for (std::size_t k = 0; k < bonds.size() && !same; ++k)
-          same = bonds.id_a[k] == discs.id[a] && bonds.id_b[k] == discs.id[b];
+        for (std::size_t k = 0; k < bonds_.size() && !same; ++k)
+          same = bonds_.id_a[k] == discs_.id[a] && bonds_.id_b[k] == discs_.id[b];
         if (same) continue;
       }
-      Random rng(bond_seed(seed, discs.id[a], discs.id[b]));
+      Random rng(bond_seed(seed, discs_.id[a], discs_.id[b]));
       auto scattered = [&](double mean) {
         return std::max(0.0, mean * (1.0 + pb.p.strength_scatter * standard_normal(rng)));
       };
-      const double kn_bond = pb.p.stiffness * law.kn;  // per unit area: contact.kn / d^2, d = 1
-      add_bond(bonds, discs.id[a], discs.id[b], static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b),
+      const double kn_bond = pb.p.stiffness * law_.kn;  // per unit area: contact.kn / d^2, d = 1
+      add_bond(bonds_, discs_.id[a], discs_.id[b], static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b),
                {.kn = kn_bond, .ks = kn_bond * ks_ratio,
-                .radius = pb.p.radius_factor * std::min(discs.radius[i], discs.radius[j]),
+                .radius = pb.p.radius_factor * std::min(discs_.radius[i], discs_.radius[j]),
                 .tensile = scattered(pb.p.tensile_strength), .shear = scattered(pb.p.shear_strength)});
       ++made;
     }
   }
   // New bonds are acting or not and out of order: the next step sorts them (prepare_bond_scratch),
   // whether or not the list is rebuilt first (the biaxial test bonds without adding discs).
-  if (made > 0) bond_scratch.activity_build = ~std::uint64_t{0};
+  if (made > 0) bond_scratch_.activity_build = ~std::uint64_t{0};
   return made;
 }
 

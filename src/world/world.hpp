@@ -7,13 +7,16 @@
 //   5. move walls, advance the clock
 // Experiments add their own stages (erosion, inflow, measurements) around World::advance(),
 // and named hooks inside it (after the forces, after integration: world/stage_hooks.hpp).
-// The members are open for reading; changes go through the methods of the second part, which
-// update what depends on what they change (the neighbour list, the member discs of clusters).
+// The state is private: read through the views of the first part, changed only through the
+// methods below them, which update what depends on what they change (the neighbour list, the
+// member discs of clusters). The checkpoint (world_archive.cpp) and white-box tests
+// (tests/world_internals.hpp) are friends.
 #include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "boundary/wall.hpp"
@@ -31,6 +34,9 @@
 #include "world/stage_hooks.hpp"
 
 namespace orogen {
+
+class ArchiveReader;
+class ArchiveWriter;
 
 // Thrown when the simulation blows up; the message names the likely cause.
 struct InstabilityError : std::runtime_error {
@@ -56,28 +62,30 @@ struct RemovalRecord {
 // 0.1 * 2 pi sqrt(m_eff / kn) (MODEL §3, thesis 2.7).
 double stable_time_step(double kn, double min_pair_mass);
 
-struct World {
-  Discs discs;
-  Clusters clusters;
-  std::vector<Wall> walls;
-  ContactLaw law;
-  BodyForce body;
-  NeighborList neighbors;  // candidate pairs and the rebuild test
-  ContactStore contacts;   // the state of each contact (histories, dashpots, wall flags)
-  MaterialTable materials;  // named materials (empty: contact.mu everywhere); set_materials
-  Bonds bonds;              // cohesive bonds between discs (contact/bonds.hpp), their breakage log
-  PairScratch scratch;
-  BondScratch bond_scratch;
-  std::vector<double> disc_friction;  // each disc's friction in this step (a world of materials)
-  std::vector<double> slip_at_step_start;  // each disc's slip as the step began (weakening walls)
-  double moved = 0;  // largest disc displacement since the last list build (from integration)
-  double dt = 1e-3;
-  double time = 0;
-  std::uint64_t step = 0;
-  int sort_every = 10;  // re-order discs in cell order every this many list builds
-  std::int64_t next_disc_id = 0, next_cluster_id = 0;
-  std::vector<RemovalRecord> removals;
-  StageHooks hooks;  // run inside advance(); not state (see stage_hooks.hpp)
+class World {
+ public:
+  // --- Reading the state: views that cannot change it ---
+  const Discs& discs() const { return discs_; }
+  const Clusters& clusters() const { return clusters_; }
+  const std::vector<Wall>& walls() const { return walls_; }
+  const ContactLaw& law() const { return law_; }
+  const BodyForce& body() const { return body_; }
+  const NeighborList& neighbors() const { return neighbors_; }  // candidate pairs and the rebuild test
+  const ContactStore& contacts() const { return contacts_; }    // each contact's state (histories, dashpots, wall flags)
+  const MaterialTable& materials() const { return materials_; }  // named materials (empty: contact.mu everywhere)
+  const Bonds& bonds() const { return bonds_; }  // cohesive bonds between discs (contact/bonds.hpp), their breakage log
+  const PairScratch& scratch() const { return scratch_; }  // the step's work arrays (memory accounting)
+  double moved() const { return moved_; }  // largest disc displacement since the last list build
+  double dt() const { return dt_; }
+  double time() const { return time_; }
+  std::uint64_t step() const { return step_; }
+  int sort_every() const { return sort_every_; }  // re-order discs in cell order every this many list builds
+  std::int64_t next_disc_id() const { return next_disc_id_; }
+  std::int64_t next_cluster_id() const { return next_cluster_id_; }
+  const std::vector<RemovalRecord>& removals() const { return removals_; }
+  // Run inside advance(); not state (see stage_hooks.hpp): experiments add theirs.
+  StageHooks& hooks() { return hooks_; }
+  const StageHooks& hooks() const { return hooks_; }
 
   // One time step (stages listed above, hooks included).
   void advance();
@@ -114,26 +122,74 @@ struct World {
 
   // Marks that the neighbour list must be rebuilt. The methods below call it where they must;
   // a caller needs it only after changing the members directly.
-  void invalidate_neighbors() { neighbors.valid = false; }
+  void invalidate_neighbors() { neighbors_.valid = false; }
 
   // --- Changes that keep the world consistent (world_changes.cpp) ---
 
+  // The engine's settings (experiments/engine_config.cpp). A new time step takes effect at the
+  // next step (the dashpots of the list were set from the law, not from dt); a new skin needs a
+  // new list.
+  void set_time_step(double dt) { dt_ = dt; }
+  void set_body_force(const BodyForce& body) { body_ = body; }
+  void set_neighbor_skin(double skin) {
+    neighbors_.skin = skin;
+    invalidate_neighbors();
+  }
+  void set_sort_every(int builds) { sort_every_ = builds; }
+  void set_materials(MaterialTable materials) { materials_ = std::move(materials); }
+  void set_layer_units(std::vector<LayerUnit> units) { materials_.units = std::move(units); }
+  // Time and step back to 0 (a settled packing becomes the start of an experiment).
+  void restart_clock() {
+    time_ = 0;
+    step_ = 0;
+  }
+  // Forgets the removals logged so far (discs trimmed while preparing never belonged to a run).
+  void clear_removals() { removals_.clear(); }
+
+  // A disc's records that nothing else in the world depends on.
+  void set_start_position(std::size_t i, double x0, double y0) {
+    discs_.x0[i] = x0;
+    discs_.y0[i] = y0;
+  }
+  void set_initial_depth(std::size_t i, double depth0) { discs_.depth0[i] = depth0; }
+  void set_orientation(std::size_t i, double theta) { discs_.theta[i] = theta; }  // a free disc's
+  void set_material(std::size_t i, std::uint8_t material) { discs_.material[i] = material; }  // in a world of materials
+  // A free disc's position (the list is rebuilt) and velocity.
+  void move_disc(std::size_t i, double x, double y) {
+    discs_.x[i] = x;
+    discs_.y[i] = y;
+    invalidate_neighbors();
+  }
+  void set_disc_velocity(std::size_t i, double vx, double vy, double omega) {
+    discs_.vx[i] = vx;
+    discs_.vy[i] = vy;
+    discs_.omega[i] = omega;
+  }
+  // The per-disc arrays for writing, for the Python package's writable numpy views
+  // (python/bindings/world_bindings.cpp) alone: the writer calls discs_changed() afterwards.
+  Discs& discs_for_writing() { return discs_; }
+  // After writes into the disc arrays: member discs back on their bodies, the list rebuilt.
+  void discs_changed() {
+    update_cluster_discs(clusters_, discs_);
+    invalidate_neighbors();
+  }
+
   // Coulomb coefficient of disc-disc contacts: every force pass reads it, nothing holds a copy.
-  void set_friction(double mu) { law.mu = mu; }
-  double friction() const { return law.mu; }
+  void set_friction(double mu) { law_.mu = mu; }
+  double friction() const { return law_.mu; }
   // The Coulomb coefficient the next step gives the contact of discs i and j: contact.mu, or in
   // a world of materials the weaker of the two discs' weakened frictions.
   double contact_friction(std::size_t i, std::size_t j) const {
-    if (!discs.has_materials) return law.mu;
-    return pair_friction(materials.list[discs.material[i]].friction_at(discs.slip[i]),
-                         materials.list[discs.material[j]].friction_at(discs.slip[j]));
+    if (!discs_.has_materials) return law_.mu;
+    return pair_friction(materials_.list[discs_.material[i]].friction_at(discs_.slip[i]),
+                         materials_.list[discs_.material[j]].friction_at(discs_.slip[j]));
   }
   // The whole law: the list holds each contact's dashpot, set from the law at its build.
   void set_contact_law(const ContactLaw& l);
   // Gives every disc there and every disc added later material 0 and no slip, until set
   // otherwise (Discs::material): friction then comes from `materials`, not law.mu. Experiments
   // call it once their layer is settled (the packing settles as the thesis's, with settle.mu).
-  void enable_materials() { discs.enable_materials(); }
+  void enable_materials() { discs_.enable_materials(); }
   // Bonds every pair of discs within their materials' bond gap whose materials both make bonds,
   // at least one of the two among the discs [first, last) and not already bonded, the two in
   // different bodies (world/bond_making.cpp). Strengths are scattered by a generator seeded with
@@ -145,7 +201,7 @@ struct World {
   void set_walls(std::vector<Wall> w);
   // Index of the wall of this name; std::invalid_argument naming it and the walls there.
   std::size_t wall_index(std::string_view name) const;
-  const Wall& wall(std::string_view name) const { return walls[wall_index(name)]; }
+  const Wall& wall(std::string_view name) const { return walls_[wall_index(name)]; }
   void set_wall_velocity(std::string_view name, double vx, double vy);
   // Smooth, rough or traction, and its Coulomb coefficient (read at every force pass).
   void set_wall_friction(std::string_view name, WallFriction friction, double mu);
@@ -162,31 +218,31 @@ struct World {
   // contacts are listed for dynamic discs; a kinematic body's new velocity changes no list).
   template <class F>
   void edit_motion(F&& edit) {
-    MotionEdit e(discs, clusters);
+    MotionEdit e(discs_, clusters_);
     edit(e);
     if (!e.changed()) return;
-    update_cluster_discs(clusters, discs);
+    update_cluster_discs(clusters_, discs_);
     if (e.motion_changed()) invalidate_neighbors();
   }
 
   // --- Reading the contacts (contact/contact_store.hpp); disc indices are those of the last
   // force pass: read before discs are removed or added. ---
-  WallContactStats wall_contact_stats(std::size_t wall) const { return orogen::wall_contact_stats(contacts, wall); }
+  WallContactStats wall_contact_stats(std::size_t wall) const { return orogen::wall_contact_stats(contacts_, wall); }
   // Calls f(disc index) for each disc that touched wall `wall` in the last force pass, in list
   // order.
   template <class F>
   void for_each_touching(std::size_t wall, F&& f) const {
-    orogen::for_each_wall_contact(contacts, [&](const WallContactView& c) {
+    orogen::for_each_wall_contact(contacts_, [&](const WallContactView& c) {
       if (c.wall == wall && c.touching) f(static_cast<std::size_t>(c.disc));
     });
   }
   // Whether the list was built for the discs there now (none added or removed since).
-  bool contacts_listed_for_discs() const { return neighbors.x_ref.size() == discs.size(); }
+  bool contacts_listed_for_discs() const { return neighbors_.x_ref.size() == discs_.size(); }
   // Calls f(PairContactView) for each candidate pair, f(WallContactView) for each wall contact.
   template <class F>
-  void for_each_pair_contact(F&& f) const { orogen::for_each_pair_contact(neighbors, contacts, f); }
+  void for_each_pair_contact(F&& f) const { orogen::for_each_pair_contact(neighbors_, contacts_, f); }
   template <class F>
-  void for_each_wall_contact(F&& f) const { orogen::for_each_wall_contact(contacts, f); }
+  void for_each_wall_contact(F&& f) const { orogen::for_each_wall_contact(contacts_, f); }
 
   // Smallest effective mass of a contact pair, for the stability limit (infinite without discs).
   double min_pair_mass() const;
@@ -195,6 +251,34 @@ struct World {
   double stable_dt() const;
   // Kinetic energy (translational and rotational) of dynamic free discs and clusters.
   double kinetic_energy() const;
+
+ private:
+  // The checkpoint writes and reads the whole state (world_archive.cpp).
+  friend void save_world(ArchiveWriter& out, World& world);
+  friend void load_world(const ArchiveReader& in, World& world);
+  friend struct WorldInternals;  // white-box tests of the engine (tests/world_internals.hpp)
+
+  Discs discs_;
+  Clusters clusters_;
+  std::vector<Wall> walls_;
+  ContactLaw law_;
+  BodyForce body_;
+  NeighborList neighbors_;
+  ContactStore contacts_;
+  MaterialTable materials_;
+  Bonds bonds_;
+  PairScratch scratch_;
+  BondScratch bond_scratch_;
+  std::vector<double> disc_friction_;       // each disc's friction in this step (a world of materials)
+  std::vector<double> slip_at_step_start_;  // each disc's slip as the step began (weakening walls)
+  double moved_ = 0;  // from integration
+  double dt_ = 1e-3;
+  double time_ = 0;
+  std::uint64_t step_ = 0;
+  int sort_every_ = 10;
+  std::int64_t next_disc_id_ = 0, next_cluster_id_ = 0;
+  std::vector<RemovalRecord> removals_;
+  StageHooks hooks_;
 };
 
 }  // namespace orogen

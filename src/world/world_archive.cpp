@@ -66,14 +66,14 @@ void load_bonds(const ArchiveReader& in, Bonds& bonds) {
 
 void save_world(ArchiveWriter& out, World& w) {
   // The arrays of a world of materials only when it is one: other checkpoints stay as they were.
-  w.discs.for_each_array([&](std::string_view name, auto& v) {
-    if (!Discs::optional_array(name) || w.discs.has_materials) out.put(key("discs", name), v);
+  w.discs_.for_each_array([&](std::string_view name, auto& v) {
+    if (!Discs::optional_array(name) || w.discs_.has_materials) out.put(key("discs", name), v);
   });
-  w.clusters.for_each_array([&](std::string_view name, auto& v) { out.put(key("clusters", name), v); });
+  w.clusters_.for_each_array([&](std::string_view name, auto& v) { out.put(key("clusters", name), v); });
   std::vector<double> wall_geometry;
   std::vector<std::uint8_t> wall_flags;
   std::string wall_names;
-  for (const auto& wall : w.walls) {
+  for (const auto& wall : w.walls_) {
     wall_geometry.insert(wall_geometry.end(), {wall.ax, wall.ay, wall.bx, wall.by, wall.vx, wall.vy,
                                                wall.surface_speed, wall.mu, wall.traction_gamma});
     wall_flags.push_back(static_cast<std::uint8_t>(wall.friction));
@@ -85,35 +85,35 @@ void save_world(ArchiveWriter& out, World& w) {
   out.put_string("walls.names", wall_names);
   // Weakening walls (mu_residual, weakening_distance, or NaN for a wall that does not weaken):
   // only when there is one, so that other checkpoints stay as they were.
-  if (std::any_of(w.walls.begin(), w.walls.end(), [](const Wall& wall) { return wall.weakens; })) {
+  if (std::any_of(w.walls_.begin(), w.walls_.end(), [](const Wall& wall) { return wall.weakens; })) {
     std::vector<double> weakening;
-    for (const auto& wall : w.walls)
+    for (const auto& wall : w.walls_)
       weakening.insert(weakening.end(), {wall.weakens ? wall.mu_residual : std::numeric_limits<double>::quiet_NaN(), wall.weakening_distance});
     out.put("walls.weakening", weakening);
   }
 
-  auto& L = w.neighbors;
-  for_each_contact_array(L, w.contacts, [&](std::string_view name, auto& v) { out.put(key("nl", name), v); });
+  auto& L = w.neighbors_;
+  for_each_contact_array(L, w.contacts_, [&](std::string_view name, auto& v) { out.put(key("nl", name), v); });
   out.put_scalar("nl.builds", L.builds);
   out.put_scalar<std::uint8_t>("nl.valid", L.valid ? 1 : 0);
   out.put_scalar("nl.skin", L.skin);
 
-  out.put_scalar("world.dt", w.dt);
-  out.put_scalar("world.time", w.time);
-  out.put_scalar("world.step", w.step);
-  out.put_scalar("world.sort_every", w.sort_every);
-  out.put_scalar("world.next_disc_id", w.next_disc_id);
-  out.put_scalar("world.next_cluster_id", w.next_cluster_id);
-  out.put_scalar("world.gx", w.body.gx);
-  out.put_scalar("world.gy", w.body.gy);
-  out.put_scalar("world.drag", w.body.drag);
-  out.put_scalar("world.moved", w.moved);
+  out.put_scalar("world.dt", w.dt_);
+  out.put_scalar("world.time", w.time_);
+  out.put_scalar("world.step", w.step_);
+  out.put_scalar("world.sort_every", w.sort_every_);
+  out.put_scalar("world.next_disc_id", w.next_disc_id_);
+  out.put_scalar("world.next_cluster_id", w.next_cluster_id_);
+  out.put_scalar("world.gx", w.body_.gx);
+  out.put_scalar("world.gy", w.body_.gy);
+  out.put_scalar("world.drag", w.body_.drag);
+  out.put_scalar("world.moved", w.moved_);
 
   std::vector<std::uint64_t> r_step;
   std::vector<double> r_time, r_x, r_y;
   std::vector<std::int64_t> r_id, r_cluster;
   std::vector<std::uint8_t> r_reason;
-  for (const auto& r : w.removals) {
+  for (const auto& r : w.removals_) {
     r_step.push_back(r.step); r_time.push_back(r.time); r_x.push_back(r.x); r_y.push_back(r.y);
     r_id.push_back(r.id); r_cluster.push_back(r.cluster_id); r_reason.push_back(static_cast<std::uint8_t>(r.reason));
   }
@@ -121,22 +121,22 @@ void save_world(ArchiveWriter& out, World& w) {
   out.put("removals.x", r_x); out.put("removals.y", r_y);
   out.put("removals.id", r_id); out.put("removals.cluster_id", r_cluster);
   out.put("removals.reason", r_reason);
-  if (w.discs.has_materials) save_bonds(out, w.bonds);
+  if (w.discs_.has_materials) save_bonds(out, w.bonds_);
 }
 
 void load_world(const ArchiveReader& in, World& w) {
-  w.discs.has_materials = in.has("discs.material");
-  w.discs.for_each_array([&](std::string_view name, auto& v) {
-    if (!Discs::optional_array(name) || w.discs.has_materials) in.get(key("discs", name), v);
+  w.discs_.has_materials = in.has("discs.material");
+  w.discs_.for_each_array([&](std::string_view name, auto& v) {
+    if (!Discs::optional_array(name) || w.discs_.has_materials) in.get(key("discs", name), v);
     else v.clear();
   });
-  w.clusters.for_each_array([&](std::string_view name, auto& v) { in.get(key("clusters", name), v); });
+  w.clusters_.for_each_array([&](std::string_view name, auto& v) { in.get(key("clusters", name), v); });
   std::vector<double> g;
   std::vector<std::uint8_t> flags;
   in.get("walls.geometry", g);
   in.get("walls.flags", flags);
   const std::string names = in.get_string("walls.names");
-  w.walls.clear();
+  w.walls_.clear();
   std::size_t pos = 0;
   for (std::size_t k = 0; 9 * k < g.size(); ++k) {
     Wall wall;
@@ -148,34 +148,34 @@ void load_world(const ArchiveReader& in, World& w) {
     wall.mu = g[9 * k + 7]; wall.traction_gamma = g[9 * k + 8];
     wall.friction = static_cast<WallFriction>(flags[2 * k]);
     wall.enabled = flags[2 * k + 1] != 0;
-    w.walls.push_back(wall);
+    w.walls_.push_back(wall);
   }
   if (in.has("walls.weakening")) {
     std::vector<double> weakening;
     in.get("walls.weakening", weakening);
-    for (std::size_t k = 0; k < w.walls.size(); ++k) {
-      w.walls[k].weakens = !std::isnan(weakening[2 * k]);
-      w.walls[k].mu_residual = w.walls[k].weakens ? weakening[2 * k] : 0.0;
-      w.walls[k].weakening_distance = weakening[2 * k + 1];
+    for (std::size_t k = 0; k < w.walls_.size(); ++k) {
+      w.walls_[k].weakens = !std::isnan(weakening[2 * k]);
+      w.walls_[k].mu_residual = w.walls_[k].weakens ? weakening[2 * k] : 0.0;
+      w.walls_[k].weakening_distance = weakening[2 * k + 1];
     }
   }
 
-  auto& L = w.neighbors;
-  for_each_contact_array(L, w.contacts, [&](std::string_view name, auto& v) { in.get(key("nl", name), v); });
+  auto& L = w.neighbors_;
+  for_each_contact_array(L, w.contacts_, [&](std::string_view name, auto& v) { in.get(key("nl", name), v); });
   L.builds = in.get_scalar<std::uint64_t>("nl.builds");
   L.valid = in.get_scalar<std::uint8_t>("nl.valid") != 0;
   L.skin = in.get_scalar<double>("nl.skin");
 
-  w.dt = in.get_scalar<double>("world.dt");
-  w.time = in.get_scalar<double>("world.time");
-  w.step = in.get_scalar<std::uint64_t>("world.step");
-  w.sort_every = in.get_scalar<int>("world.sort_every");
-  w.next_disc_id = in.get_scalar<std::int64_t>("world.next_disc_id");
-  w.next_cluster_id = in.get_scalar<std::int64_t>("world.next_cluster_id");
-  w.body.gx = in.get_scalar<double>("world.gx");
-  w.body.gy = in.get_scalar<double>("world.gy");
-  w.body.drag = in.get_scalar<double>("world.drag");
-  w.moved = in.get_scalar<double>("world.moved");
+  w.dt_ = in.get_scalar<double>("world.dt");
+  w.time_ = in.get_scalar<double>("world.time");
+  w.step_ = in.get_scalar<std::uint64_t>("world.step");
+  w.sort_every_ = in.get_scalar<int>("world.sort_every");
+  w.next_disc_id_ = in.get_scalar<std::int64_t>("world.next_disc_id");
+  w.next_cluster_id_ = in.get_scalar<std::int64_t>("world.next_cluster_id");
+  w.body_.gx = in.get_scalar<double>("world.gx");
+  w.body_.gy = in.get_scalar<double>("world.gy");
+  w.body_.drag = in.get_scalar<double>("world.drag");
+  w.moved_ = in.get_scalar<double>("world.moved");
 
   std::vector<std::uint64_t> r_step;
   std::vector<double> r_time, r_x, r_y;
@@ -185,13 +185,13 @@ void load_world(const ArchiveReader& in, World& w) {
   in.get("removals.x", r_x); in.get("removals.y", r_y);
   in.get("removals.id", r_id); in.get("removals.cluster_id", r_cluster);
   in.get("removals.reason", r_reason);
-  w.removals.clear();
+  w.removals_.clear();
   for (std::size_t k = 0; k < r_step.size(); ++k)
-    w.removals.push_back({r_step[k], r_time[k], r_id[k], r_cluster[k], r_x[k], r_y[k],
+    w.removals_.push_back({r_step[k], r_time[k], r_id[k], r_cluster[k], r_x[k], r_y[k],
                           static_cast<RemovalReason>(r_reason[k])});
-  w.bonds = Bonds{};
-  w.bond_scratch = BondScratch{};  // which bonds act: found again at the first step
-  if (in.has("bonds.id_a")) load_bonds(in, w.bonds);
+  w.bonds_ = Bonds{};
+  w.bond_scratch_ = BondScratch{};  // which bonds act: found again at the first step
+  if (in.has("bonds.id_a")) load_bonds(in, w.bonds_);
 }
 
 }  // namespace orogen
