@@ -3,15 +3,15 @@
 // the particle was last seen deeper than h_i. While deeper the age is 0; a particle never seen
 // deeper is "un-reset" and ages from its first output. Each dip below h_i resets the clock.
 #include <cstdint>
-#include <filesystem>
+#include <functional>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
-namespace orogen {
+#include "io/archive_fields.hpp"
 
-struct AnalysisState;
-void save_analysis_state(const std::filesystem::path& path, const AnalysisState& state);
-AnalysisState load_analysis_state(const std::filesystem::path& path);
+namespace orogen {
 
 class ClosureAges {
  public:
@@ -29,12 +29,25 @@ class ClosureAges {
   std::uint32_t dips(std::size_t i) const { return dips_[i]; }  // times it went below h_i
   std::size_t n_depths() const { return last_deep_.size(); }
 
+  // Its state as columns of a table whose rows hold one each (`ages` projects a row to it),
+  // keyed `prefix` + name, the per-depth values `n_depths` a row (io/archive_fields.hpp).
+  template <class Rows, class Ages, class F>
+  static void columns(Rows& rows, Ages ages, std::size_t n_depths, std::string_view prefix, F&& f) {
+    const auto key = [prefix](std::string_view name) { return std::string(prefix).append(name); };
+    const auto of = [ages](auto member) {
+      return [ages, member](auto& row) -> auto& { return std::invoke(ages, row).*member; };
+    };
+    f(key("first_time"), column(rows, of(&ClosureAges::first_time_)));
+    f(key("time"), column(rows, of(&ClosureAges::time_)));
+    f(key("depth"), column(rows, of(&ClosureAges::depth_)));
+    f(key("max_depth"), column(rows, of(&ClosureAges::max_depth_)));
+    f(key("seen"), column(rows, of(&ClosureAges::seen_)));
+    f(key("last_deep"), flat_column(rows, of(&ClosureAges::last_deep_), n_depths));
+    f(key("dips"), flat_column(rows, of(&ClosureAges::dips_), n_depths));
+    f(key("deep_now"), flat_column(rows, of(&ClosureAges::deep_now_), n_depths));
+  }
 
  private:
-  // The state file of the incremental analysis writes and reads this state (analysis_state.cpp).
-  friend void save_analysis_state(const std::filesystem::path& path, const AnalysisState& state);
-  friend AnalysisState load_analysis_state(const std::filesystem::path& path);
-
   double first_time_ = 0, time_ = 0, depth_ = 0, max_depth_ = 0;
   bool seen_ = false;
   std::vector<double> last_deep_;

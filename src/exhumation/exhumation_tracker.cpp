@@ -24,6 +24,13 @@ ExhumationTracker::ExhumationTracker(ExhumationParams params) : p_(std::move(par
   cum_count_.assign(p_.n_columns, 0);
 }
 
+void ExhumationTracker::check_loaded() const {
+  const std::size_t cells = p_.closure.size() * p_.n_columns;
+  if (prev_surface_age_.size() != cells || jump_total_.size() != cells || jump_count_.size() != cells ||
+      cum_area_.size() != p_.n_columns || cum_count_.size() != p_.n_columns)
+    throw std::runtime_error("column arrays of the wrong length");
+}
+
 void ExhumationTracker::record_erosion(std::span<const ErosionEvent> eroded, OutputRecord& r) {
   const std::size_t nc = p_.closure.size();
   for (const auto& e : eroded) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exhumation/closure_ages.hpp"
+#include "io/archive_fields.hpp"
 
 namespace orogen {
 
@@ -91,11 +92,50 @@ class ExhumationTracker {
     std::int64_t last_output = -1;
   };
 
- private:
-  // The state file of the incremental analysis writes and reads this state (analysis_state.cpp).
-  friend void save_analysis_state(const std::filesystem::path& path, const AnalysisState& state);
-  friend AnalysisState load_analysis_state(const std::filesystem::path& path);
+  // Its state, each field once with its key, for the incremental analysis's state file
+  // (analysis_state.cpp, io/archive_fields.hpp); per-closure values are row-major. The closure
+  // depths and the particle stride are not listed: a load goes into a tracker made with them,
+  // then check_loaded().
+  template <class Self, class F>
+  static void fields(Self& self, F&& f) {
+    static_assert(sizeof(std::size_t) == sizeof(std::uint64_t), "n_columns is stored as uint64");
+    const std::size_t nc = self.p_.closure.size();
+    f("h0", self.p_.h0);
+    f("x_lo", self.p_.x_lo);
+    f("column_width", self.p_.column_width);
+    f("n_columns", self.p_.n_columns);
+    f("mean_radius", self.p_.mean_radius);
+    f("p_id", keyed_rows(self.particles_, [nc](auto& rows, auto&& g) {
+      g("p_last_output", column(rows, &Particle::last_output));
+      g("p_radius", column(rows, &Particle::radius));
+      ClosureAges::columns(rows, &Particle::ages, nc, "p_", g);
+    }));
+    f("prev_surface_age", self.prev_surface_age_);
+    f("cum_area", self.cum_area_);
+    f("jump_total", self.jump_total_);
+    f("cum_count", self.cum_count_);
+    f("jump_count", self.jump_count_);
+    f("outputs", self.outputs_);
+    f("last_step", self.last_step_);
+    auto& e = self.eroded_;
+    const auto event = [](auto member) { return [member](auto& row) -> auto& { return row.event.*member; }; };
+    f("e_step", column(e, event(&ErosionEvent::step)));
+    f("e_id", column(e, event(&ErosionEvent::id)));
+    f("e_col", column(e, &ErodedParticle::column));
+    f("e_last", column(e, &ErodedParticle::last_output));
+    f("e_time", column(e, event(&ErosionEvent::time)));
+    f("e_x", column(e, event(&ErosionEvent::x)));
+    f("e_y", column(e, event(&ErosionEvent::y)));
+    f("e_r", column(e, &ErodedParticle::radius));
+    f("e_d", column(e, &ErodedParticle::depth));
+    f("e_m", column(e, &ErodedParticle::max_depth));
+    f("e_age", flat_column(e, &ErodedParticle::age, nc));
+    f("e_un", flat_column(e, &ErodedParticle::unreset, nc));
+  }
+  // Throws if the column arrays loaded do not fit the column grid (the message names no file).
+  void check_loaded() const;
 
+ private:
   std::unordered_map<std::int64_t, Particle> particles_;
   std::vector<double> prev_surface_age_, cum_area_, jump_total_;
   std::vector<std::int64_t> cum_count_, jump_count_;
