@@ -40,13 +40,15 @@ class SurfaceCli : public orogen::testing::TempDirTest {
 // A small wedge (h0 = 5) with the nonlinear hillslope, a river under windward rain on the pro
 // side, deposition and recycling, and the thesis's threshold: about 30 fluvial and a few
 // hillslope removals, deposits from the first output on (3 s on one core).
-const std::string kEveryLaw =
+const std::string kSmallWedge =
     " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
     " --set wedge.window=3 --set wedge.s_end=1.0 --set wedge.outputs=6 --set wedge.erosion_height=1.1"
-    " --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2"
+    " --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2";
+const std::string kEveryLawKeys =
     " --set surface.every=100 --set surface.diffusivity=0.2 --set surface.critical_slope=1.0"
     " --set surface.erodibility=0.3 --set surface.windward=pro --set surface.windward_factor=3"
     " --set surface.deposition=true --set surface.recycling=0.5 --set surface.base_level=1.02";
+const std::string kEveryLaw = kSmallWedge + kEveryLawKeys;
 
 // series.csv's rows as {column: value}.
 std::vector<std::map<std::string, double>> series_rows(const fs::path& run) {
@@ -89,6 +91,33 @@ std::size_t count_of(const std::string& text, const std::string& word) {
 }
 
 }  // namespace
+
+// A branch (orogen run --from) of a run without surface laws may switch them on: they start at
+// the branch's state (the ledger from its discs, nothing carried), remove and lay discs from
+// there, the same for one and two threads and across a resume. Isostasy stays fixed (exit 2).
+TEST_F(SurfaceCli, LawsSwitchedOnInABranchStartThere) {
+  const fs::path source = dir_ / "source";
+  auto r = run_orogen("run --out '" + source.string() + "' --threads 1" + kSmallWedge, dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(slurp(source / "series.csv").find("area_entered"), std::string::npos);
+  const std::string branch = " --from '" + source.string() + ":3'" + kSmallWedge + kEveryLawKeys;
+  ASSERT_NO_FATAL_FAILURE(orogen::testing::expect_same_runs(branch, dir_));
+  const fs::path one = dir_ / "one";
+
+  const auto rows = series_rows(one);
+  ASSERT_EQ(rows.size(), 4u);  // outputs 3 to 6 of the source's spacing
+  EXPECT_EQ(rows.front().at("area_entered"), rows.front().at("area_model"));  // nothing gone yet
+  expect_ledger_balanced(rows);
+  EXPECT_GT(rows.back().at("area_eroded_fluvial"), 0.0);
+  const std::string removals = slurp(one / "removals.csv");
+  EXPECT_GT(count_of(removals, ",eroded_fluvial\n"), 0u) << removals;
+
+  r = run_orogen("run --out '" + (dir_ / "flexed").string() + "' --from '" + source.string() + "'" + kSmallWedge +
+                     " --set isostasy.model=airy",
+                 dir_);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("isostasy.model"), std::string::npos) << r.err;
+}
 
 TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
   // Killed after its third output (checkpoint after the second): the carry, the ledger and the

@@ -68,8 +68,9 @@ class Experiment {
   virtual void save(ArchiveWriter& out) const = 0;
   virtual void load(const ArchiveReader& in) = 0;
   // A branch (orogen run --from) has loaded another run's state: put this run's values of the
-  // keys a branch may change back where the state holds them (a wedge's basal friction).
-  virtual void adopt_branch_config(World&) const {}
+  // keys a branch may change back where the state holds them (a wedge's basal friction), and
+  // start what the source ran without (surface laws switched on in the branch).
+  virtual void adopt_branch_config(World&) {}
   // Work after the last step (e.g. writing the packing file).
   virtual void finish(World&, const std::filesystem::path& /*out_dir*/) {}
   // The run's results, written to summary.csv after finish() (none: no file).

@@ -253,7 +253,12 @@ void SinglyVergentExperiment::load(const ArchiveReader& in) {
   state_fields(*this, ArchiveLoader(in));
   displacements_.load(in, "singly");
   start_surface();
-  if (surface_.active()) SurfaceProcesses::state_fields(surface_, ArchiveLoader(in));
+  if (surface_.active()) surface_.load_state(in);
+}
+
+// Surface laws switched on in a branch start their ledger from the branch's discs.
+void SinglyVergentExperiment::adopt_branch_config(World& w) {
+  if (surface_.active()) surface_.start_in_branch(w);
 }
 
 std::string SinglyVergentExperiment::status(const World& w) const {

@@ -53,6 +53,7 @@ class SinglyVergentExperiment final : public Experiment {
   void after_output(const World& world) override;
   void save(ArchiveWriter& out) const override;
   void load(const ArchiveReader& in) override;
+  void adopt_branch_config(World& w) override;
   std::vector<SummaryValue> summary(const World& world) const override;
   std::string status(const World& world) const override;
   double fraction_done(const World& world) const override { return shortening(world) / spec_.shortening; }

@@ -395,18 +395,19 @@ void WedgeExperiment::load(const ArchiveReader& in) {
   displacements_.load(in, "wedge");
   history_.load(in, "wedge");
   start_surface();
-  if (surface_.active()) SurfaceProcesses::state_fields(surface_, ArchiveLoader(in));
+  if (surface_.active()) surface_.load_state(in);
   start_isostasy();
   if (base_.active()) IsostaticBase::state_fields(base_, ArchiveLoader(in));
 }
 
-void WedgeExperiment::adopt_branch_config(World& w) const {
+void WedgeExperiment::adopt_branch_config(World& w) {
   for (const auto& [walls, mu] : {std::pair{&pro_walls_, spec_.mu_bp}, std::pair{&retro_walls_, spec_.mu_br}})
     for (const std::size_t k : *walls) {
       const std::string name = w.walls()[k].name;
       w.set_wall_friction(name, w.walls()[k].friction, mu);
       w.set_wall_weakening(name, spec_.base_weakening);
     }
+  if (surface_.active()) surface_.start_in_branch(w);
 }
 
 std::string WedgeExperiment::status(const World& w) const {

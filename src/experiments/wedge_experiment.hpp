@@ -76,7 +76,7 @@ class WedgeExperiment final : public Experiment {
   std::vector<SummaryValue> summary(const World& world) const override;
   void save(ArchiveWriter& out) const override;
   void load(const ArchiveReader& in) override;
-  void adopt_branch_config(World& w) const override;
+  void adopt_branch_config(World& w) override;
   std::string status(const World& world) const override;
   double fraction_done(const World& world) const override { return convergence(world) / spec_.s_end; }
   double h0() const override { return spec_.h0; }

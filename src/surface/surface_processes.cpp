@@ -8,6 +8,8 @@
 #include <unordered_set>
 
 #include "analysis/surface.hpp"
+#include "io/archive_fields.hpp"
+#include "io/binary_archive.hpp"
 #include "surface/profile_step.hpp"
 #include "util/random.hpp"
 
@@ -46,6 +48,15 @@ Surface SurfaceProcesses::columns_of(const World& w, std::int64_t first, std::in
   // columns must not become one more by round-off.
   const double width = spec_.column_width, x_lo = static_cast<double>(first) * width;
   return measure_surface(w.discs(), x_lo, x_lo + (static_cast<double>(last - first) - 0.5) * width, width);
+}
+
+void SurfaceProcesses::load_state(const ArchiveReader& in) {
+  loaded_ = in.has("surface.due");
+  if (loaded_) state_fields(*this, ArchiveLoader(in));
+}
+
+void SurfaceProcesses::start_in_branch(const World& w) {
+  if (!loaded_) ledger_.entered = disc_area(w);
 }
 
 void SurfaceProcesses::cover(std::int64_t first, std::int64_t last) {

@@ -55,6 +55,13 @@ class SurfaceProcesses {
     return k < deposited_at_.size() ? deposited_at_[k] : std::numeric_limits<double>::quiet_NaN();
   }
 
+  // The state a checkpoint holds (state_fields). A branch that switches the laws on (orogen run
+  // --from a run without them) finds none there; start_in_branch then begins the ledger.
+  void load_state(const ArchiveReader& in);
+  // In a branch whose source had no laws: the ledger starts from the model's area now, nothing
+  // carried, laid or eroded yet. Changes nothing when load_state found a state.
+  void start_in_branch(const World& w);
+
   template <class Self, class F>
   static void state_fields(Self& self, F&& f) {
     f("surface.origin", self.origin_);
@@ -88,6 +95,7 @@ class SurfaceProcesses {
   SurfaceSpec spec_;
   std::vector<double> radii_;
   std::uint64_t seed_ = 0;
+  bool loaded_ = false;  // load_state found a state in the checkpoint
   std::int64_t origin_ = 0;  // absolute column of carry_.due[0]
   ErosionCarry carry_;
   std::int64_t deposits_ = 0;  // discs laid so far (the draw of the next)
