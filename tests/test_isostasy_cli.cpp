@@ -36,11 +36,13 @@ class IsostasyCli : public orogen::testing::TempDirTest {
 
 // A small wedge (h0 = 5) on a plate of flexural parameter 2 h0, solved every 100 steps, with
 // hillslopes, a river and deposition so that basins fill while the base moves (3 s on one core).
-const std::string kFlexure =
+const std::string kRigid =
     " --set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4"
     " --set wedge.window=3 --set wedge.s_end=1.0 --set wedge.outputs=6"
-    " --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2"
-    " --set isostasy.model=flexure --set isostasy.rigidity=5 --set isostasy.every=100"
+    " --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2";
+const std::string kPlate = " --set isostasy.model=flexure --set isostasy.rigidity=5 --set isostasy.every=100";
+const std::string kFlexure =
+    kRigid + kPlate +
     " --set surface.every=100 --set surface.diffusivity=0.2 --set surface.erodibility=0.02"
     " --set surface.deposition=true"
     " --set surface.base_level=1.02";
@@ -90,6 +92,32 @@ TEST_F(IsostasyCli, AFlexedBaseIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
   const std::string series = slurp(one / "series.csv");
   EXPECT_NE(series.find("base_s_point"), std::string::npos);
   EXPECT_NE(series.find("basin_pro"), std::string::npos);
+}
+
+// A branch (orogen run --from) of a run on a rigid base may switch the plate on: the base becomes
+// segments there and sinks under the wedge from then on, the same for one and two threads and
+// across a resume. The segment length is the set-up's (exit 2).
+TEST_F(IsostasyCli, APlateSwitchedOnInABranchSinksFromThere) {
+  const fs::path source = dir_ / "source";
+  auto r = run_orogen("run --out '" + source.string() + "' --threads 1" + kRigid, dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run_orogen("run --out '" + (dir_ / "refused").string() + "' --from '" + source.string() + "'" + kRigid + kPlate +
+                     " --set isostasy.segment_length=1",
+                 dir_);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("isostasy.segment_length"), std::string::npos) << r.err;
+  ASSERT_NO_FATAL_FAILURE(
+      orogen::testing::expect_same_runs(" --from '" + source.string() + ":2'" + kRigid + kPlate, dir_));
+  expect_base_in_one_piece(dir_ / "one");
+  // Output 0 is the source's state on the new base, still flat.
+  const SnapshotReader reader(dir_ / "one" / "snapshots.h5");
+  const Snapshot first = reader.read(0);
+  EXPECT_GT(first.walls.size(), 20u);
+  for (const auto& wall : first.walls) {
+    if (wall[0] != wall[2]) {
+      EXPECT_EQ(wall[1], 0.0);
+    }
+  }
 }
 
 TEST_F(IsostasyCli, BadIsostasyInputExitsWith2AndWritesNothing) {

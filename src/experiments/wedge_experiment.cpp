@@ -19,7 +19,6 @@
 namespace orogen {
 namespace {
 
-constexpr std::string_view kProBase = "pro_base", kRetroBase = "retro_base", kRetroEnd = "retro_end";
 constexpr std::string_view kPinHook = "wedge.pin_retro_base";
 
 }  // namespace
@@ -75,17 +74,7 @@ void WedgeExperiment::build_layer(World& w) {
   set_weakening(pro, spec_.base_weakening);
   set_weakening(retro, spec_.base_weakening);
   start_isostasy();
-  if (base_.active()) {
-    // The far pro-side plate ends at the first node; segments from there (src/isostasy).
-    Wall far = pro;
-    far.bx = base_.nodes().front();
-    std::vector<Wall> walls{far};
-    for (Wall& s : base_.segments(pro, retro, x_end_ + 1)) walls.push_back(std::move(s));
-    walls.push_back(end);
-    w.set_walls(std::move(walls));
-  } else {
-    w.set_walls({pro, retro, end});
-  }
+  w.set_walls(base_.active() ? segmented_base(pro, retro, end) : std::vector<Wall>{pro, retro, end});
   // Until a wedge exists, the layer in front of the S-point stalls on its base and must be
   // long enough to break at the S-point rather than against the rigid kinematic slab.
   window_pro_ = -std::max(spec_.window, spec_.initial_active) * spec_.h0;
@@ -397,7 +386,8 @@ void WedgeExperiment::load(const ArchiveReader& in) {
   start_surface();
   if (surface_.active()) surface_.load_state(in);
   start_isostasy();
-  if (base_.active()) IsostaticBase::state_fields(base_, ArchiveLoader(in));
+  base_loaded_ = base_.active() && in.has("isostasy.nodes");
+  if (base_loaded_) IsostaticBase::state_fields(base_, ArchiveLoader(in));
 }
 
 void WedgeExperiment::adopt_branch_config(World& w) {
@@ -408,6 +398,7 @@ void WedgeExperiment::adopt_branch_config(World& w) {
       w.set_wall_weakening(name, spec_.base_weakening);
     }
   if (surface_.active()) surface_.start_in_branch(w);
+  if (base_.active() && !base_loaded_) start_isostasy_in_branch(w);
 }
 
 std::string WedgeExperiment::status(const World& w) const {

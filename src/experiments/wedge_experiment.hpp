@@ -6,6 +6,8 @@
 // slab built from a repeated settled tile (4.2), optional erosion above a threshold height
 // (6.3), and the wedge measurements of MODEL §8.
 #include <optional>
+#include <string_view>
+#include <vector>
 
 #include "experiments/experiment.hpp"
 #include "experiments/packing_experiment.hpp"
@@ -99,8 +101,12 @@ class WedgeExperiment final : public Experiment {
   // (Re)makes the deflecting base from the spec and the tile (setup and load); the indices of the
   // walls of each base (attach).
   void start_isostasy();
+  // A branch that switches isostasy on (its source ran on a rigid base): the base becomes the
+  // segments set-up makes, balanced against the load of the tile the layer is stamped from.
+  void start_isostasy_in_branch(World& world);
   double layer_load(const World& world) const;
   void find_base_walls(const World& world);
+  std::vector<Wall> segmented_base(const Wall& pro, const Wall& retro, const Wall& end) const;
   // Moves the base's segments and the end wall to where the base is at this step.
   void place_base(World& world) const;
   // The base's height at x now (0: a rigid base), and as a function (empty: a rigid base).
@@ -134,6 +140,8 @@ class WedgeExperiment final : public Experiment {
   // Steps between window and stray checks: the kinematic slab's riding speeds hold until the
   // next (isostasy.every is a multiple of it).
   static constexpr std::uint64_t kHousekeepingEvery = 100;
+  // The walls of a rigid base (a deflecting base splits the first two into segments).
+  static constexpr std::string_view kProBase = "pro_base", kRetroBase = "retro_base", kRetroEnd = "retro_end";
   static double tile_margin_for(double h0) { return 0.5 * h0 + 2.0; }
   // The checkpointed scalars and arrays, each once with its key, for save() and load()
   // (io/archive_fields.hpp); the tile, the displacements and the history save themselves.
@@ -165,6 +173,7 @@ class WedgeExperiment final : public Experiment {
   WedgeHistory history_;               // the shape at each output, for summary.csv
   SurfaceProcesses surface_;           // the surface laws and the area ledger
   IsostaticBase base_;                 // the base's deflection (isostasy)
+  bool base_loaded_ = false;           // load() found the base's state (not a branch switching it on)
   std::vector<std::size_t> pro_walls_, retro_walls_;  // each base's walls: one, or its segments
 };
 

@@ -2,9 +2,11 @@
 // kinematic slab riding on it, and what series.csv records of it.
 #include <fmt/format.h>
 
+#include <limits>
 #include <numbers>
 
 #include "experiments/wedge_experiment.hpp"
+#include "packing/tile.hpp"
 
 namespace orogen {
 namespace {
@@ -22,6 +24,33 @@ void WedgeExperiment::start_isostasy() {
   // run then loads the nodes it started with: an extended run keeps them).
   const double x_lo = -(spec_.initial_active + spec_.window + spec_.tile_length + spec_.s_end) * spec_.h0;
   base_ = IsostaticBase(spec_.isostasy, x_lo, x_end_ + 1, 0.0);  // the load: build_layer, or the checkpoint
+}
+
+// The far pro-side plate ends at the first node; segments from there (src/isostasy), then the
+// retro end wall.
+std::vector<Wall> WedgeExperiment::segmented_base(const Wall& pro, const Wall& retro, const Wall& end) const {
+  Wall far = pro;
+  far.bx = base_.nodes().front();
+  std::vector<Wall> walls{far};
+  for (Wall& s : base_.segments(pro, retro, x_end_ + 1)) walls.push_back(std::move(s));
+  walls.push_back(end);
+  return walls;
+}
+
+void WedgeExperiment::start_isostasy_in_branch(World& w) {
+  w.set_walls(segmented_base(w.wall(kProBase), w.wall(kRetroBase), w.wall(kRetroEnd)));
+  find_base_walls(w);
+  // The layer as built is gone under the wedge: its load per length is that of a tile stamped
+  // as build_layer stamps them, right to left, each dropping the discs that overlap the one to
+  // its right (a scratch world of three: the middle one has its seam).
+  World scratch;
+  const double L = tile_.length;
+  for (double left : {2 * L, L, 0.0}) stamp_tile(scratch, tile_, left, std::numeric_limits<double>::infinity());
+  double area = 0;
+  for (std::size_t i = 0; i < scratch.discs().size(); ++i)
+    if (scratch.discs().x[i] >= L && scratch.discs().x[i] < 2 * L)
+      area += std::numbers::pi * scratch.discs().radius[i] * scratch.discs().radius[i];
+  base_.set_reference_load(area / L);
 }
 
 // The built layer's weight per length (g = 1, grains of density 1): its discs' area over its
