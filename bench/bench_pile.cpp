@@ -282,7 +282,7 @@ int main(int argc, char** argv) {
                   settle_threads);
       std::fflush(stdout);
       const auto t0 = std::chrono::steady_clock::now();
-      world.set_body_force({.gx = world.body().gx, .gy = world.body().gy, .drag = drag});
+      world.set_drag(drag);
       for (std::uint64_t s = 0; s < settle; ++s) {
         world.advance();
         if ((s + 1) % 10000 == 0) {
@@ -291,7 +291,7 @@ int main(int argc, char** argv) {
           std::fflush(stdout);
         }
       }
-      world.set_body_force({.gx = world.body().gx, .gy = world.body().gy, .drag = 0.0});
+      world.set_drag(0.0);
       for (std::uint64_t s = 0; s < undamped; ++s) world.advance();
       const double ts = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::printf("# settled in %.1f s (%llu list builds): KE/disc %.3e, top %.3f\n", ts,

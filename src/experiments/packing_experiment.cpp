@@ -22,7 +22,7 @@ namespace {
 
 void PackingExperiment::setup(World& w) {
   place_packing(w, packing_);
-  w.set_body_force({.gx = w.body().gx, .gy = w.body().gy, .drag = settle_.drag});
+  w.set_drag(settle_.drag);
   mu_ = w.friction();
   phase_ = Falling;
   phase_start_time_ = 0;
@@ -53,7 +53,7 @@ bool PackingExperiment::advance(World& w) {
       break;
     case Resettling:
       if (at_rest) {
-        w.set_body_force({.gx = w.body().gx, .gy = w.body().gy, .drag = 0});
+        w.set_drag(0);
         phase_ = Relaxing;
         phase_start_time_ = w.time();
       }

@@ -131,6 +131,7 @@ class World {
   // new list.
   void set_time_step(double dt) { dt_ = dt; }
   void set_body_force(const BodyForce& body) { body_ = body; }
+  void set_drag(double rate) { body_.drag = rate; }  // the extra viscous drag of settling
   void set_neighbor_skin(double skin) {
     neighbors_.skin = skin;
     invalidate_neighbors();
