@@ -1,7 +1,7 @@
 // The world seen from Python: every per-disc array as a numpy view (no copy), and the
 // changes of World's API (world/world.hpp), which keep the neighbour list and the clusters
 // consistent. Views are read-only unless asked for; after writing into one, `changed()` tells
-// the world, as World::invalidate_neighbors does for C++ code.
+// the world (World::discs_changed).
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 

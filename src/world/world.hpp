@@ -121,15 +121,17 @@ class World {
   BuildStats rebuild_contacts(bool sort);
 
   // Marks that the neighbour list must be rebuilt. The methods below call it where they must;
-  // a caller needs it only after changing the members directly.
+  // outside the World only a test forcing a rebuild needs it.
   void invalidate_neighbors() { neighbors_.valid = false; }
 
   // --- Changes that keep the world consistent (world_changes.cpp) ---
 
-  // The engine's settings (experiments/engine_config.cpp). A new time step takes effect at the
-  // next step (the dashpots of the list were set from the law, not from dt); a new skin needs a
-  // new list.
-  void set_time_step(double dt) { dt_ = dt; }
+  // The engine's settings (experiments/engine_config.cpp). A new time step or skin needs a new
+  // list (each contact's dashpot is set from the law and dt at the build).
+  void set_time_step(double dt) {
+    dt_ = dt;
+    invalidate_neighbors();
+  }
   void set_body_force(const BodyForce& body) { body_ = body; }
   void set_drag(double rate) { body_.drag = rate; }  // the extra viscous drag of settling
   void set_neighbor_skin(double skin) {
