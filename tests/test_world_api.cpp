@@ -190,8 +190,9 @@ static_assert(std::is_same_v<decltype(std::declval<World&>().law()), const Conta
 static_assert(std::is_same_v<decltype(std::declval<World&>().neighbors()), const NeighborList&>);
 static_assert(!std::is_aggregate_v<World>);
 
-// The changes that keep something consistent do so: a moved disc or a new skin rebuilds the list,
-// a list build forgets the displacement, the per-disc records change nothing else.
+// The changes that keep something consistent do so: a moved disc, a new skin or time step
+// rebuilds the list, a list build forgets the displacement, the per-disc records change nothing
+// else.
 TEST(WorldApi, DiscEditsAndSettingsKeepTheListConsistent) {
   World w = sliding_pair();
   w.advance();
@@ -199,13 +200,15 @@ TEST(WorldApi, DiscEditsAndSettingsKeepTheListConsistent) {
   w.set_disc_velocity(1, 0.2, 0, 0);
   w.set_initial_depth(1, 3.0);
   w.set_start_position(1, 1.0, 2.0);
-  w.set_time_step(5e-5);
   w.set_sort_every(0);
   EXPECT_TRUE(w.neighbors().valid);
   EXPECT_EQ(w.discs().vx[1], 0.2);
   EXPECT_EQ(w.discs().depth0[1], 3.0);
   EXPECT_EQ(w.discs().y0[1], 2.0);
+  w.set_time_step(5e-5);
+  EXPECT_FALSE(w.neighbors().valid);
   EXPECT_EQ(w.dt(), 5e-5);
+  w.advance();
 
   w.move_disc(1, 0.0, 1.5);
   EXPECT_FALSE(w.neighbors().valid);
