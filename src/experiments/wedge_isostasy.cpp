@@ -13,6 +13,14 @@ namespace {
 
 constexpr double kDeepestBase = 10;        // [h0]: a base deeper than this stops the run (exit 3)
 
+// The weight per length (g = 1, grains of density 1) of the discs centred in [lo, hi).
+double load_between(const Discs& d, double lo, double hi) {
+  double area = 0;
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (d.x[i] >= lo && d.x[i] < hi) area += std::numbers::pi * d.radius[i] * d.radius[i];
+  return area / (hi - lo);
+}
+
 bool names_base(const std::string& wall, std::string_view base) {
   return wall == base || (wall.size() > base.size() && wall.starts_with(base) && wall[base.size()] == '_');
 }
@@ -46,29 +54,21 @@ void WedgeExperiment::start_isostasy_in_branch(World& w) {
   World scratch;
   const double L = tile_.length;
   for (double left : {2 * L, L, 0.0}) stamp_tile(scratch, tile_, left, std::numeric_limits<double>::infinity());
-  double area = 0;
-  for (std::size_t i = 0; i < scratch.discs().size(); ++i)
-    if (scratch.discs().x[i] >= L && scratch.discs().x[i] < 2 * L)
-      area += std::numbers::pi * scratch.discs().radius[i] * scratch.discs().radius[i];
-  base_.set_reference_load(area / L);
+  base_.set_reference_load(load_between(scratch.discs(), L, 2 * L));
 }
 
 // The built layer's weight per length (g = 1, grains of density 1): its discs' area over its
 // length, seams and all, away from the retro end wall and the slab's far end.
 double WedgeExperiment::layer_load(const World& w) const {
-  const double lo = slab_left_ + spec_.h0, hi = x_end_ - spec_.h0;
-  double area = 0;
-  for (std::size_t i = 0; i < w.discs().size(); ++i)
-    if (w.discs().x[i] >= lo && w.discs().x[i] < hi) area += std::numbers::pi * w.discs().radius[i] * w.discs().radius[i];
-  return area / (hi - lo);
+  return load_between(w.discs(), slab_left_ + spec_.h0, x_end_ - spec_.h0);
 }
 
 void WedgeExperiment::find_base_walls(const World& w) {
   pro_walls_.clear();
   retro_walls_.clear();
   for (std::size_t k = 0; k < w.walls().size(); ++k) {
-    if (names_base(w.walls()[k].name, "pro_base")) pro_walls_.push_back(k);
-    if (names_base(w.walls()[k].name, "retro_base")) retro_walls_.push_back(k);
+    if (names_base(w.walls()[k].name, kProBase)) pro_walls_.push_back(k);
+    if (names_base(w.walls()[k].name, kRetroBase)) retro_walls_.push_back(k);
   }
 }
 
