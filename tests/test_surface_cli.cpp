@@ -153,12 +153,58 @@ TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
   EXPECT_GT(rows.back().at("area_recycled"), 0.0);
 }
 
+// Sedimentation without erosion: no law and no threshold, only sediment brought from outside
+// and filled into both forelands up to the base level. Deposits are laid, nothing is eroded, the
+// supply's books hold what the rate delivered, and the run is the same for one and two threads
+// and across a kill and resume (2 s on one core).
+TEST_F(SurfaceCli, AnOutsideSupplyFillsTheForelandsWithoutErosion) {
+  const double rate = 0.3;
+  const std::string supply = kSmallWedge + " --set wedge.erosion_height=0 --set surface.every=100"
+                             " --set surface.deposition=true --set surface.sediment_supply=0.3"
+                             " --set surface.base_level=1.3";
+  ASSERT_NO_FATAL_FAILURE(orogen::testing::expect_same_runs(supply, dir_));
+  const fs::path one = dir_ / "one";
+  EXPECT_EQ(count_of(slurp(one / "removals.csv"), ",eroded"), 0u);
+  const auto rows = series_rows(one);
+  ASSERT_EQ(rows.size(), 7u);
+  expect_ledger_balanced(rows);
+  const auto& last = rows.back();
+  EXPECT_EQ(last.at("area_eroded"), 0.0);
+  EXPECT_EQ(last.at("area_recycled"), 0.0);
+  EXPECT_GT(last.at("area_deposited"), 20.0);  // a few dozen discs
+  EXPECT_GT(last.at("area_supplied"), last.at("area_deposited"));  // the rest still owed to the columns
+  // Filled or bypassed, the supply is the rate times the time (to the last update, 100 steps
+  // before the output at most).
+  EXPECT_NEAR(last.at("area_supplied") + last.at("area_supply_bypassed"), rate * last.at("time"),
+              1e-3 * rate * last.at("time"));
+}
+
+// A branch of a run with laws but no supply may bring one in: its books start at zero there.
+TEST_F(SurfaceCli, ASupplyBroughtInByABranchStartsItsBooksThere) {
+  const fs::path source = dir_ / "source", branch = dir_ / "branch";
+  auto r = run_orogen("run --out '" + source.string() + "' --threads 1" + kEveryLaw, dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run_orogen("run --from '" + source.string() + ":3' --out '" + branch.string() + "' --threads 1" + kEveryLaw +
+                     " --set surface.sediment_supply=0.3",
+                 dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = series_rows(branch);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows.front().at("area_supplied"), 0.0);
+  EXPECT_GT(rows.back().at("area_supplied") + rows.back().at("area_supply_bypassed"), 0.0);
+  expect_ledger_balanced(rows);
+}
+
 TEST_F(SurfaceCli, BadSurfaceInputExitsWith2AndWritesNothing) {
   orogen::testing::expect_refused({
       {"--set surface.diffusivity=-1", {"surface.diffusivity", "-1", ">= 0"}},
       {"--set surface.erodibility=0.1 --set surface.windward_factor=3", {"surface.windward_factor", "surface.windward"}},
       {"--set surface.recycling=0.5 --set surface.diffusivity=1", {"surface.recycling", "surface.deposition"}},
       {"--set surface.base_level=60", {"surface.base_level", "60", "< 50"}},
+      {"--set surface.sediment_supply=0.5", {"surface.sediment_supply", "surface.deposition"}},
+      {"--set surface.sediment_supply=-1", {"surface.sediment_supply", "-1", ">= 0"}},
+      {"--set surface.sediment_supply=1 --set surface.deposition=true --set surface.supply_to=east",
+       {"surface.supply_to", "east", "\"pro\""}},
       {"--set surface.windward=east", {"surface.windward", "east", "\"pro\""}},
       {"--set surface.sediment_material=sand --set surface.deposition=true",
        {"surface.sediment_material", "\"sand\"", "[materials]"}},

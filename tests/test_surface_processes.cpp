@@ -92,5 +92,34 @@ TEST(SurfaceLaws, RecyclingFillsEachSidesShareOfItsNetLossIntoThatSide) {
   EXPECT_LE(h[2], 10.0);
 }
 
+TEST(SurfaceLaws, AnOutsideSupplyFillsTheForelandsItNamesAndWhatFindsNoRoomBypasses) {
+  // No law: the supply alone, sediment_supply x dt filled into the sides of the highest column
+  // (index 3): pro [0, 3), retro [3, 7). Each side's basin holds 1 (two columns of 1 up to 1.5).
+  const std::vector<double> start = {2, 1, 1, 3, 1, 1, 2};
+  SurfaceSpec spec;
+  spec.base_level = 1.5;
+  spec.sediment_supply = 0.5;
+  spec.supply_to = SupplySide::Pro;
+  std::vector<double> h = start;
+  ProfileStep step = advance_profile(h, 1.0, 0.0, spec, 2.0);
+  EXPECT_EQ(h, (std::vector<double>{2, 1.5, 1.5, 3, 1, 1, 2}));
+  EXPECT_EQ(step.supplied, 1.0);
+  EXPECT_EQ(step.supply_bypassed, 0.0);
+  EXPECT_EQ(step.recycled + step.bypassed, 0.0);
+
+  spec.supply_to = SupplySide::Both;  // half each: both basins full
+  h = start;
+  step = advance_profile(h, 1.0, 0.0, spec, 4.0);
+  EXPECT_EQ(h, (std::vector<double>{2, 1.5, 1.5, 3, 1.5, 1.5, 2}));
+  EXPECT_EQ(step.supplied, 2.0);
+
+  spec.supply_to = SupplySide::Retro;  // three times the room: the rest bypasses
+  h = start;
+  step = advance_profile(h, 1.0, 0.0, spec, 6.0);
+  EXPECT_EQ(h, (std::vector<double>{2, 1, 1, 3, 1.5, 1.5, 2}));
+  EXPECT_EQ(step.supplied, 1.0);
+  EXPECT_EQ(step.supply_bypassed, 2.0);
+}
+
 }  // namespace
 }  // namespace orogen

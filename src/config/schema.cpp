@@ -67,6 +67,8 @@ std::vector<KeySpec> with_changes(std::vector<KeySpec> table) {
       {"surface.deposition", kOnBranch},
       {"surface.recycling", kOnBranch},
       {"surface.sediment_material", kOnBranch},
+      {"surface.sediment_supply", kOnBranch},
+      {"surface.supply_to", kOnBranch},
       {"isostasy.model", kOnBranch},
       {"isostasy.mantle_density", kOnBranch},
       {"isostasy.rigidity", kOnBranch},
@@ -255,6 +257,13 @@ const std::vector<KeySpec>& schema() {
       text("surface.sediment_material", "", {},
            "material of the deposits, a name of [materials]; empty: the first material (or contact.mu without "
            "materials)"),
+      real("surface.sediment_supply", 0.0, ge(0), none,
+           "sediment brought from outside the model (an axial river, a hinterland beyond the section) and filled into "
+           "the forelands of surface.supply_to, lowest columns first, up to surface.base_level; what finds no room "
+           "bypasses. Deposits without erosion; needs surface.deposition [d^2 / sqrt(d/g)]"),
+      text("surface.supply_to", "both", {"both", "pro", "retro"},
+           "the forelands surface.sediment_supply fills: both (half each), or the pro or retro side of the highest "
+           "column"),
 
       // [isostasy]: a base that deflects under the wedge's load (issue 40, docs/isostasy.md)
       text("isostasy.model", "none", {"none", "airy", "flexure"},
@@ -396,7 +405,8 @@ const std::vector<LaterKey>& later_keys() {
           "surface.every", "surface.column_width", "surface.diffusivity", "surface.critical_slope",
           "surface.erodibility", "surface.area_exponent", "surface.slope_exponent", "surface.precipitation",
           "surface.windward", "surface.windward_factor", "surface.base_level", "surface.deposition",
-          "surface.recycling", "surface.sediment_material", "isostasy.model", "isostasy.mantle_density",
+          "surface.recycling", "surface.sediment_material", "surface.sediment_supply", "surface.supply_to",
+          "isostasy.model", "isostasy.mantle_density",
           "isostasy.rigidity", "isostasy.every", "isostasy.segment_length"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.

@@ -172,7 +172,10 @@ constexpr std::array kSeries = {
 
 std::vector<SeriesColumn> SinglyVergentExperiment::columns() const {
   auto out = series_columns(kSeries);
-  if (surface_.active()) out.insert(out.end(), ledger_columns().begin(), ledger_columns().end());
+  if (surface_.active()) {
+    const auto ledger = ledger_columns(surface_);
+    out.insert(out.end(), ledger.begin(), ledger.end());
+  }
   return out;
 }
 

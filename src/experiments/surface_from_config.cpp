@@ -31,6 +31,13 @@ SurfaceSpec read_surface_keys(const Config& c, double h0) {
     throw config_error(c.sources_of({"surface.recycling", "surface.deposition"}), "surface.recycling",
                        format_float(s.recycling),
                        "0 unless surface.deposition = true: recycled sediment is laid as discs");
+  s.sediment_supply = c.get_float("surface.sediment_supply");
+  const std::string supply_to = c.get_string("surface.supply_to");
+  s.supply_to = supply_to == "pro" ? SupplySide::Pro : supply_to == "retro" ? SupplySide::Retro : SupplySide::Both;
+  if (s.sediment_supply > 0 && !s.deposition)
+    throw config_error(c.sources_of({"surface.sediment_supply", "surface.deposition"}), "surface.sediment_supply",
+                       format_float(s.sediment_supply),
+                       "0 unless surface.deposition = true: the supplied sediment is laid as discs");
   if (const auto k = material_named_by(c, "surface.sediment_material"); k >= 0)
     s.sediment_material = static_cast<std::uint8_t>(k);
   return s;

@@ -4,8 +4,8 @@
 
 namespace orogen {
 
-const std::vector<SeriesColumn>& ledger_columns() {
-  static const std::vector<SeriesColumn> columns = {
+std::vector<SeriesColumn> ledger_columns(const SurfaceProcesses& surface) {
+  std::vector<SeriesColumn> columns = {
       {"area_entered", "area of the discs ever added (initial layer and inflow; not deposits) [d^2]"},
       {"area_eroded", "area of the discs eroded so far, by the threshold and the surface laws [d^2]"},
       {"area_eroded_hillslope", "of area_eroded: removals logged eroded_hillslope [d^2]"},
@@ -18,13 +18,22 @@ const std::vector<SeriesColumn>& ledger_columns() {
        "area the laws' net erosion filled into the forelands (surface.recycling), in the continuum [d^2]"},
       {"area_bypassed", "area to recycle that found no room below surface.base_level and left the model [d^2]"},
   };
+  if (surface.spec().sediment_supply > 0) {
+    columns.push_back({"area_supplied",
+                       "area of the outside sediment supply (surface.sediment_supply) filled into the forelands, in "
+                       "the continuum [d^2]"});
+    columns.push_back({"area_supply_bypassed",
+                       "area of the outside sediment supply that found no room below surface.base_level [d^2]"});
+  }
   return columns;
 }
 
 std::vector<double> ledger_values(const SurfaceProcesses& surface, const World& w) {
   const AreaLedger& l = surface.ledger();
-  return {l.entered, l.eroded_total(), l.eroded[0], l.eroded[1], l.eroded[2], l.deposited, l.left,
-          disc_area(w), l.recycled, l.bypassed};
+  std::vector<double> values = {l.entered,  l.eroded_total(), l.eroded[0], l.eroded[1], l.eroded[2],
+                                l.deposited, l.left,          disc_area(w), l.recycled,  l.bypassed};
+  if (surface.spec().sediment_supply > 0) values.insert(values.end(), {l.supplied, l.supply_bypassed});
+  return values;
 }
 
 SnapshotField deposition_field(const SurfaceProcesses& surface, const World& w) {

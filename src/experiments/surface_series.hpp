@@ -11,8 +11,9 @@
 namespace orogen {
 
 // The ledger's columns, after the experiment's own (docs/output-files.md): area_model equals
-// area_entered - area_eroded + area_deposited - area_left to round-off.
-const std::vector<SeriesColumn>& ledger_columns();
+// area_entered - area_eroded + area_deposited - area_left to round-off. With an outside sediment
+// supply, two more: what of it filled the forelands and what found no room.
+std::vector<SeriesColumn> ledger_columns(const SurfaceProcesses& surface);
 std::vector<double> ledger_values(const SurfaceProcesses& surface, const World& world);
 
 // When each disc was laid as sediment (NaN: not a deposit), for the snapshots.

@@ -302,7 +302,10 @@ constexpr std::array kWedgeSeries = {
 
 std::vector<SeriesColumn> WedgeExperiment::columns() const {
   auto out = series_columns(kWedgeSeries);
-  if (surface_.active()) out.insert(out.end(), ledger_columns().begin(), ledger_columns().end());
+  if (surface_.active()) {
+    const auto ledger = ledger_columns(surface_);
+    out.insert(out.end(), ledger.begin(), ledger.end());
+  }
   if (base_.active()) out.insert(out.end(), isostasy_columns().begin(), isostasy_columns().end());
   return out;
 }

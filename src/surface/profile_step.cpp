@@ -66,17 +66,32 @@ ProfileStep advance_profile(std::vector<double>& h, double dx, double x_lo, cons
     spec.script(h, dx, x_lo, dt);
     record_lowering(out.lowered[static_cast<std::size_t>(SurfaceLaw::Script)], before, h);
   }
-  if (spec.recycling > 0 && !h.empty()) {
-    const auto divide = static_cast<std::size_t>(std::max_element(start.begin(), start.end()) - start.begin());
-    // Net loss of each side, pro [0, divide) and retro [divide, n).
-    double loss[2] = {0, 0};
+  if (h.empty() || (spec.recycling <= 0 && spec.sediment_supply <= 0)) return out;
+  // The sides of the divide: pro [0, divide), retro [divide, n).
+  const auto divide = static_cast<std::size_t>(std::max_element(start.begin(), start.end()) - start.begin());
+  auto fill_side = [&](int side, double area) {
+    return side == 0 ? fill_to_level(h, 0, divide, dx, area, spec.base_level)
+                     : fill_to_level(h, divide, h.size(), dx, area, spec.base_level);
+  };
+  if (spec.recycling > 0) {
+    double loss[2] = {0, 0};  // net loss of each side
     for (std::size_t j = 0; j < h.size(); ++j) loss[j < divide ? 0 : 1] += (start[j] - h[j]) * dx;
     for (int side = 0; side < 2; ++side) {
       const double area = spec.recycling * std::max(loss[side], 0.0);
-      const double left = side == 0 ? fill_to_level(h, 0, divide, dx, area, spec.base_level)
-                                    : fill_to_level(h, divide, h.size(), dx, area, spec.base_level);
+      const double left = fill_side(side, area);
       out.recycled += area - left;
       out.bypassed += left;
+    }
+  }
+  if (spec.sediment_supply > 0) {
+    const double share[2] = {spec.supply_to == SupplySide::Retro ? 0.0 : spec.supply_to == SupplySide::Both ? 0.5 : 1.0,
+                             spec.supply_to == SupplySide::Pro ? 0.0 : spec.supply_to == SupplySide::Both ? 0.5 : 1.0};
+    for (int side = 0; side < 2; ++side) {
+      if (share[side] == 0) continue;
+      const double area = share[side] * spec.sediment_supply * dt;
+      const double left = fill_side(side, area);
+      out.supplied += area - left;
+      out.supply_bypassed += left;
     }
   }
   return out;

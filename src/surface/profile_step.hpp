@@ -14,13 +14,16 @@ struct ProfileStep {
   std::array<std::vector<double>, kSurfaceLaws> lowered;  // each law's lowering of each column [d]
   double recycled = 0;  // area filled into the forelands [d^2]
   double bypassed = 0;  // area to recycle that found no room below the base level [d^2]
+  double supplied = 0;  // area of the outside supply filled into the forelands [d^2]
+  double supply_bypassed = 0;  // area of the supply that found no room there [d^2]
 };
 
 // Advances h (columns dx wide, column 0 centred at x_lo + dx / 2) by dt: the hillslope law with
 // closed ends (it moves area, conserving it), the river draining to the base level at both
 // ends, the script; then spec.recycling of each side's net loss (the sides of the highest
 // column: pro to the left, retro to the right) filled into that side's lowest columns, up to
-// the base level at most.
+// the base level at most; then the outside supply, spec.sediment_supply x dt, filled alike into
+// the forelands spec.supply_to names (half each into both).
 ProfileStep advance_profile(std::vector<double>& h, double dx, double x_lo, const SurfaceSpec& spec, double dt);
 
 // Fills `area` into the columns [first, last) of h, lowest first, as water fills a basin: to one

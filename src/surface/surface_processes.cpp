@@ -52,7 +52,10 @@ Surface SurfaceProcesses::columns_of(const World& w, std::int64_t first, std::in
 
 void SurfaceProcesses::load_state(const ArchiveReader& in) {
   loaded_ = in.has("surface.due");
-  if (loaded_) state_fields(*this, ArchiveLoader(in));
+  if (!loaded_) return;
+  book_fields(*this, ArchiveLoader(in));
+  // A branch that brings the supply in (its source had none) starts its books at zero.
+  if (spec_.sediment_supply > 0 && in.has("surface.supplied")) supply_fields(*this, ArchiveLoader(in));
 }
 
 void SurfaceProcesses::start_in_branch(const World& w) {
@@ -109,6 +112,8 @@ void SurfaceProcesses::update(World& w, double x_lo, double x_hi, double dt, con
   accrue_change(carry_, offset, before, h, width, step.lowered);
   ledger_.recycled += step.recycled;
   ledger_.bypassed += step.bypassed;
+  ledger_.supplied += step.supplied;
+  ledger_.supply_bypassed += step.supply_bypassed;
   // The first pass on the surface measured above (no disc has moved since), then again after
   // each pass that removed some.
   for (int pass = 0; pass < kMaxRemovalPasses && pay_removals(w, s, offset) > 0; ++pass) s = columns_of(w, first, last);

@@ -25,6 +25,7 @@ struct AreaLedger {
   double deposited = 0;                         // sediment discs laid
   double left = 0;                              // left the domain
   double recycled = 0, bypassed = 0;            // of the laws' net loss: filled into the forelands, or no room there
+  double supplied = 0, supply_bypassed = 0;     // of the outside supply: filled into the forelands, or no room there
 
   double eroded_total() const { return eroded_threshold + eroded[0] + eroded[1] + eroded[2]; }
   // What the model should hold: in - eroded + deposited - out.
@@ -64,6 +65,14 @@ class SurfaceProcesses {
 
   template <class Self, class F>
   static void state_fields(Self& self, F&& f) {
+    book_fields(self, f);
+    // Only with a supply, so that a run without one writes the checkpoint it always did.
+    if (self.spec_.sediment_supply > 0) supply_fields(self, f);
+  }
+
+ private:
+  template <class Self, class F>
+  static void book_fields(Self& self, F&& f) {
     f("surface.origin", self.origin_);
     f("surface.due", self.carry_.due);
     f("surface.by_hillslope", self.carry_.by_law[0]);
@@ -79,8 +88,12 @@ class SurfaceProcesses {
     f("surface.recycled", self.ledger_.recycled);
     f("surface.bypassed", self.ledger_.bypassed);
   }
+  template <class Self, class F>
+  static void supply_fields(Self& self, F&& f) {
+    f("surface.supplied", self.ledger_.supplied);
+    f("surface.supply_bypassed", self.ledger_.supply_bypassed);
+  }
 
- private:
   // Makes the carry cover absolute columns [first, last) (column k spans [k w, (k + 1) w)).
   void cover(std::int64_t first, std::int64_t last);
   // The surface on absolute columns [first, last).

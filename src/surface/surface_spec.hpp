@@ -11,6 +11,9 @@ namespace orogen {
 // The side the rain comes from under an orographic pattern: more precipitation there.
 enum class Windward { None, Pro, Retro };
 
+// The forelands an outside sediment supply fills: both (half each), or one.
+enum class SupplySide { Both, Pro, Retro };
+
 // A user's law (from Python): advances the heights h of columns dx wide, the first centred at
 // x_lo + dx / 2, by dt, in place.
 using SurfaceScript = std::function<void(std::vector<double>& h, double dx, double x_lo, double dt)>;
@@ -29,10 +32,15 @@ struct SurfaceSpec {
   double base_level = 0;       // where rivers drain and basins fill to [d]
   bool deposition = false;     // particles laid where the surface rises
   double recycling = 0;        // fraction of the profile's net loss filled into the forelands
+  double sediment_supply = 0;  // area brought from outside the model into the forelands [d^2 / sqrt(d/g)]
+  SupplySide supply_to = SupplySide::Both;
   std::uint8_t sediment_material = 0;  // the deposits' material, an index of [materials]
   SurfaceScript script;           // a user's law, after the others
 
-  bool has_laws() const { return diffusivity > 0 || erodibility > 0 || static_cast<bool>(script); }
+  // Whether anything moves the surface: a law, or sediment from outside.
+  bool has_laws() const {
+    return diffusivity > 0 || erodibility > 0 || static_cast<bool>(script) || sediment_supply > 0;
+  }
 };
 
 }  // namespace orogen

@@ -30,18 +30,18 @@ RUNS = {
               "--set", "wedge.outputs=4", "--set", "wedge.erosion_height=0.9",
               "--set", "output.contacts=true", "--set", "output.stress=true", "--set", "output.stress_grid=2",
               "--set", "analysis.in_run=true"],
-    # A wedge with surface laws and deposits (docs/surface.md): its series gains the area ledger,
-    # its outputs the deposition time.
+    # A wedge with surface laws, an outside supply and deposits (docs/surface.md): its series
+    # gains the area ledger and the supply's books, its outputs the deposition time.
     "surface": ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
                 "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
                 "--set", "wedge.outputs=4", "--set", "surface.every=100", "--set", "surface.diffusivity=0.5",
-                "--set", "surface.deposition=true"],
-    # A singly-vergent wedge with surface laws and deposits: the same ledger and field.
+                "--set", "surface.deposition=true", "--set", "surface.sediment_supply=0.1"],
+    # A singly-vergent wedge with surface laws, a supply and deposits: the same ledger and field.
     "singly_surface": ["--set", "run.experiment=singly_vergent", "--set", "particles.packing=random_discs",
                        "--set", "layer.length=40", "--set", "layer.thickness=5", "--set", "contact.kn=2000",
                        "--set", "singly.speed=0.05", "--set", "singly.shortening=0.5", "--set", "singly.outputs=3",
                        "--set", "surface.every=100", "--set", "surface.diffusivity=0.3",
-                       "--set", "surface.deposition=true"],
+                       "--set", "surface.deposition=true", "--set", "surface.sediment_supply=0.1"],
     # A wedge on a deflecting base (docs/isostasy.md): its series gains the base's columns.
     "isostasy": ["--set", "run.experiment=wedge", "--set", "layer.thickness=5", "--set", "wedge.tile_length=4",
                  "--set", "wedge.retro_length=4", "--set", "wedge.initial_active=4", "--set", "wedge.s_end=0.2",
