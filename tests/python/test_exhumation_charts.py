@@ -19,7 +19,7 @@ import xarray as xr
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import source_tree  # noqa: E402,F401  (the package of this source tree)
-from orogen.analysis import exhumation as orogen_analysis, exhumation_summary  # noqa: E402
+from orogen.analysis import basins, exhumation as orogen_analysis, exhumation_summary  # noqa: E402
 from orogen.charts import exhumation as exhumation_charts  # noqa: E402
 
 BINARY = os.environ.get("OROGEN_BINARY", "")
@@ -228,6 +228,38 @@ class BasinsAndBase(unittest.TestCase):
         expected = np.bincount(column[ok], weights=np.pi * r[ok] ** 2, minlength=ds.sizes["column"]) / width / h0
         np.testing.assert_allclose(ds.deposit_thickness.values[-1], expected, rtol=1e-9, atol=1e-12)
         self.assertGreater(expected.sum(), 0)
+
+    def test_parcels_followed_through_their_basin(self):
+        tracks = basins.deposit_tracks(self.run_dir)
+        self.assertGreater(tracks["id"].nunique(), 0)
+        # Every deposit counted once, on one side; a side is where it was first seen.
+        table = basins.record(tracks)
+        self.assertEqual(table["laid"].sum(), tracks["id"].nunique())
+        first = tracks.groupby("id").first()
+        self.assertTrue(((first["x"] < 0) == (first["side"] == "pro")).all())
+        # The base under a parcel is the snapshot's base line there; on the plate it has moved.
+        with h5py.File(os.path.join(self.run_dir, "snapshots.h5"), "r") as f:
+            k = int(tracks["output"].max())
+            g, h0 = f["output_%06d" % k], float(f.attrs["h0"])
+            walls = g["walls"][()]
+        at = tracks[tracks["output"] == k]
+        np.testing.assert_allclose(at["base"], basins.base_under(walls, at["x"].values * h0) / h0, rtol=0, atol=1e-12)
+        self.assertGreater(np.abs(at["base"]).max(), 0.0)
+        # Histories start where each parcel was first seen and stop when it leaves its basin.
+        history = basins.subsidence(tracks)
+        start = history.groupby("id").first()
+        self.assertTrue((start[["age", "sunk", "subsided"]] == 0).all().all())
+        self.assertTrue(tracks.loc[tracks["in_basin"], "id"].isin(history["id"]).all())
+        summary = basins.subsidence_summary(history, span=0.2)
+        self.assertEqual(list(summary["side"]), ["pro", "retro"])
+        out = os.path.join(self.tmp, "subsidence.png")
+        basins.main([self.run_dir, "--figure", out])
+        self.assertGreater(os.path.getsize(out), 1000)
+
+    def test_base_under_is_the_line_through_the_segments(self):
+        # Two sloping segments and a vertical end wall: the line through their ends.
+        walls = np.array([[-2.0, 0.0, 0.0, -1.0], [0.0, -1.0, 2.0, 0.0], [2.0, 0.0, 2.0, 5.0]])
+        np.testing.assert_allclose(basins.base_under(walls, np.array([-1.0, 0.0, 1.5])), [-0.5, -1.0, -0.25])
 
 
 if __name__ == "__main__":

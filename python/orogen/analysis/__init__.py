@@ -8,4 +8,6 @@
     exhumation_summary   chapter 6's indicators per run  (python3 -m orogen.analysis.exhumation_summary)
     traction             what the bases transmit          (python3 -m orogen.analysis.traction)
     stress               the wedge's interior stress      (python3 -m orogen.analysis.stress)
+    basins               what the foreland basins record: deposits kept, parcels' subsidence
+                                                          (python3 -m orogen.analysis.basins)
 """
