@@ -5,11 +5,13 @@ deepest point and where, its height at the S-point, the foredeep's room under ea
 pro forebulge, the sediment laid so far; then each run's pro thrust sheets (orogen.analysis.cycles:
 step-outs of Dp of at least 0.5 h0, their number and mean length).
 
-    scripts/isostasy_table.py /work/runs/isostasy        (Markdown tables on standard output)
+    scripts/isostasy_table.py /work/runs/isostasy [--at 8,16,21]   (Markdown tables on standard output)
+
+--at: the S values of the first table (2, 4, 6, 8 unless given).
 """
 
+import argparse
 import os
-import sys
 
 import numpy as np
 import pandas as pd
@@ -23,9 +25,9 @@ def series_of(path):
     return pd.read_csv(os.path.join(path, "series.csv"), comment="#")
 
 
-def at_rows(name, s):
+def at_rows(name, s, at=AT):
     out = []
-    for S in AT:
+    for S in at:
         r = s.iloc[(s.S - S).abs().argmin()]
         get = lambda c: r[c] if c in r else np.nan  # noqa: E731
         out.append(dict(run=name, S=round(r.S, 2), H=r.H, Dp=r.Dp, Dr=r.Dr, deepest=get("deflection_max"),
@@ -41,14 +43,14 @@ def sheets(name, s):
                 mean_spacing=summary["mean_spacing"])
 
 
-def main(folder):
+def main(folder, at=AT):
     shape, thrusts = [], []
     for name in sorted(os.listdir(folder)):
         path = os.path.join(folder, name)
         if not os.path.isfile(os.path.join(path, "summary.csv")):
             continue
         s = series_of(path)
-        shape += at_rows(name, s)
+        shape += at_rows(name, s, at)
         thrusts.append(sheets(name, s))
     fmt = lambda v: "-" if isinstance(v, float) and np.isnan(v) else (f"{v:.3g}" if isinstance(v, float) else str(v))  # noqa: E731
     for table in (shape, thrusts):
@@ -61,4 +63,8 @@ def main(folder):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "runs/isostasy")
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("folder", nargs="?", default="runs/isostasy", help="a folder of wedge runs")
+    parser.add_argument("--at", default=",".join(str(v) for v in AT), help="S values of the first table")
+    args = parser.parse_args()
+    main(args.folder, tuple(float(v) for v in args.at.split(",")))
