@@ -84,8 +84,8 @@ ProfileStep advance_profile(std::vector<double>& h, double dx, double x_lo, cons
     }
   }
   if (spec.sediment_supply > 0) {
-    const double share[2] = {spec.supply_to == SupplySide::Retro ? 0.0 : spec.supply_to == SupplySide::Both ? 0.5 : 1.0,
-                             spec.supply_to == SupplySide::Pro ? 0.0 : spec.supply_to == SupplySide::Both ? 0.5 : 1.0};
+    const double pro = spec.supply_to == SupplySide::Both ? 0.5 : spec.supply_to == SupplySide::Pro ? 1.0 : 0.0;
+    const double share[2] = {pro, 1.0 - pro};
     for (int side = 0; side < 2; ++side) {
       if (share[side] == 0) continue;
       const double area = share[side] * spec.sediment_supply * dt;
