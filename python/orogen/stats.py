@@ -34,6 +34,7 @@ import tomllib
 import numpy as np
 
 from . import atomic, tables
+from .markdown import md_table, shown  # noqa: F401  (md_table: scripts import it from here)
 from .analysis import cycles as thrust_cycles, powerlaw
 
 SERIES = ("Dp", "Mp", "Dr", "Mr", "H", "T")
@@ -191,15 +192,6 @@ def num(x):
     return repr(x) if math.isfinite(x) else ""
 
 
-def shown(x):
-    if isinstance(x, str):
-        return x
-    if isinstance(x, (int, np.integer)):
-        return str(int(x))
-    x = float(x)
-    return f"{x:.4g}" if math.isfinite(x) else ""
-
-
 def csv_text(title, columns, rows):
     """columns: [(name, meaning)]; rows: lists of numbers or strings."""
     out = io.StringIO()
@@ -211,14 +203,6 @@ def csv_text(title, columns, rows):
     for r in rows:
         w.writerow([v if isinstance(v, str) else num(v) for v in r])
     return out.getvalue()
-
-
-def md_table(header, rows, numeric=None):
-    numeric = numeric or [True] * len(header)
-    out = "| " + " | ".join(header) + " |\n|" + "".join("---:|" if n else "---|" for n in numeric) + "\n"
-    for r in rows:
-        out += "| " + " | ".join(shown(v).replace("|", "\\|") for v in r) + " |\n"
-    return out
 
 
 def write(path, text):

@@ -19,7 +19,7 @@ import h5py
 import numpy as np
 import pandas as pd
 
-from ..stats import md_table
+from ..markdown import md_table
 
 SIDES = ("pro", "retro")
 
