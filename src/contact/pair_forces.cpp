@@ -134,31 +134,50 @@ void all_pair_forces(const PairView& L, const DiscView& d, const ContactLaw& law
 // The share of touching pairs above which a whole chunk goes through the kernel untested.
 constexpr double kDenseShare = 0.65;
 
-// Thread t's even chunks, then its odd ones, with the normal law Normal (one instance of the
-// loops per registered law, chosen once per step).
+// Thread t's chunks of one parity, with the normal law Normal (one instance of the loops per
+// registered law, chosen once per step).
+template <class Normal, class Friction>
+void parity_forces(const NeighborList& L, const PairView& pairs, const DiscView& d, const ContactLaw& law,
+                   const Friction& friction, double dt, DiscForce* force, const ThreadSplit& split, std::size_t t,
+                   std::ptrdiff_t parity) {
+  const std::ptrdiff_t begin = split.chunk[t], end = split.chunk[t + 1];
+  for (std::ptrdiff_t k = begin + ((begin & 1) != parity); k < end; k += 2) {
+    const auto kk = static_cast<std::size_t>(k);
+    // The pairs that touched at the build untested, then the rest tested. Either way gives
+    // the same bits; the hint is missing right after a resume.
+    const std::size_t begin_pair = L.chunk_start[kk], end_pair = L.chunk_start[kk + 1];
+    std::size_t untested_end =
+        kk < L.chunk_touching.size() ? std::min(begin_pair + L.chunk_touching[kk], end_pair) : begin_pair;
+    // A chunk that is mostly touching (the settled pile: 74%) goes untested whole: testing
+    // its few apart pairs from memory cost the 80k pile 6-9% (docs/performance.md).
+    const double pairs_in_chunk = static_cast<double>(end_pair - begin_pair);
+    if (static_cast<double>(untested_end - begin_pair) >= kDenseShare * pairs_in_chunk) untested_end = end_pair;
+    all_pair_forces<Normal>(pairs, d, law, friction, dt, begin_pair, untested_end, force);
+    touching_pair_forces<Normal>(pairs, d, law, friction, dt, untested_end, end_pair, force);
+  }
+}
+
+// Thread t's even chunks, then its odd ones. Chunks of one parity share no disc, so they run in
+// parallel without races, and every disc sums its pairs in the same order for any number of
+// threads.
 template <class Normal, class Friction>
 void chunk_forces(const NeighborList& L, const PairView& pairs, const DiscView& d, const ContactLaw& law,
                   const Friction& friction, double dt, DiscForce* force, const ThreadSplit& split, std::size_t t) {
-  // Even chunks, then odd chunks: chunks of one parity share no disc, so they run in parallel
-  // without races, and every disc sums its pairs in the same order for any number of threads.
-  const std::ptrdiff_t begin = split.chunk[t], end = split.chunk[t + 1];
   for (std::ptrdiff_t parity = 0; parity < 2; ++parity) {
-    for (std::ptrdiff_t k = begin + ((begin & 1) != parity); k < end; k += 2) {
-      const auto kk = static_cast<std::size_t>(k);
-      // The pairs that touched at the build untested, then the rest tested. Either way gives
-      // the same bits; the hint is missing right after a resume.
-      const std::size_t begin_pair = L.chunk_start[kk], end_pair = L.chunk_start[kk + 1];
-      std::size_t untested_end =
-          kk < L.chunk_touching.size() ? std::min(begin_pair + L.chunk_touching[kk], end_pair) : begin_pair;
-      // A chunk that is mostly touching (the settled pile: 74%) goes untested whole: testing
-      // its few apart pairs from memory cost the 80k pile 6-9% (docs/performance.md).
-      const double pairs_in_chunk = static_cast<double>(end_pair - begin_pair);
-      if (static_cast<double>(untested_end - begin_pair) >= kDenseShare * pairs_in_chunk) untested_end = end_pair;
-      all_pair_forces<Normal>(pairs, d, law, friction, dt, begin_pair, untested_end, force);
-      touching_pair_forces<Normal>(pairs, d, law, friction, dt, untested_end, end_pair, force);
-    }
+    parity_forces<Normal>(L, pairs, d, law, friction, dt, force, split, t, parity);
 #pragma omp barrier
   }
+}
+
+// Calls run(normal law, friction) with the step's law and friction.
+template <class Run>
+void with_law_and_friction(const ContactLaw& law, const double* mu_disc, Discs& discs, Run&& run) {
+  with_normal_law(law.normal_force, [&](auto normal) {
+    if (mu_disc == nullptr)
+      run(normal, UniformFriction{law.mu});
+    else
+      run(normal, MaterialFriction{mu_disc, discs.slip.data()});
+  });
 }
 
 }  // namespace
@@ -168,12 +187,19 @@ void pair_forces_share(const NeighborList& L, PairContacts& contacts, Discs& dis
   const DiscView d{discs.x.data(), discs.y.data(), discs.vx.data(), discs.vy.data(), discs.omega.data(),
                    discs.radius.data()};
   const PairView pairs{L.first.data(), L.second.data(), contacts.gamma_n.data(), contacts.xi.data()};
-  with_normal_law(law.normal_force, [&](auto normal) {
-    if (mu_disc == nullptr)
-      chunk_forces<decltype(normal)>(L, pairs, d, law, UniformFriction{law.mu}, dt, force, split, t);
-    else
-      chunk_forces<decltype(normal)>(L, pairs, d, law, MaterialFriction{mu_disc, discs.slip.data()}, dt, force, split,
-                                     t);
+  with_law_and_friction(law, mu_disc, discs, [&](auto normal, const auto& friction) {
+    chunk_forces<decltype(normal)>(L, pairs, d, law, friction, dt, force, split, t);
+  });
+}
+
+void pair_forces_parity(const NeighborList& L, PairContacts& contacts, Discs& discs, const ContactLaw& law,
+                        const double* mu_disc, double dt, DiscForce* force, const ThreadSplit& split, std::size_t t,
+                        int parity) {
+  const DiscView d{discs.x.data(), discs.y.data(), discs.vx.data(), discs.vy.data(), discs.omega.data(),
+                   discs.radius.data()};
+  const PairView pairs{L.first.data(), L.second.data(), contacts.gamma_n.data(), contacts.xi.data()};
+  with_law_and_friction(law, mu_disc, discs, [&](auto normal, const auto& friction) {
+    parity_forces<decltype(normal)>(L, pairs, d, law, friction, dt, force, split, t, parity);
   });
 }
 

@@ -35,4 +35,11 @@ struct PairScratch {
 void pair_forces_share(const NeighborList& list, PairContacts& contacts, Discs& discs, const ContactLaw& law,
                        const double* mu_disc, double dt, DiscForce* forces, const ThreadSplit& split, std::size_t t);
 
+// One parity of share t's chunks (0: the even ones, 1: the odd ones), added onto `forces`, with
+// no barrier: for a step whose parities run apart, with an exchange between them (ranks that
+// hold copies of the world, parallel/rank_step.hpp). Even then odd gives pair_forces_share's bits.
+void pair_forces_parity(const NeighborList& list, PairContacts& contacts, Discs& discs, const ContactLaw& law,
+                        const double* mu_disc, double dt, DiscForce* forces, const ThreadSplit& split, std::size_t t,
+                        int parity);
+
 }  // namespace orogen

@@ -67,12 +67,19 @@ void check_build(const BuildStats& s, const World& w) {
 }  // namespace
 
 void World::advance() {
-  if (contacts_stale()) {
-    const bool sort = sort_every_ > 0 && neighbors_.builds % static_cast<std::uint64_t>(sort_every_) == 0;
-    check_build(rebuild_contacts(sort), *this);
-  }
+  rebuild_if_stale();
   step_stages();
   hooks_.run(Stage::AfterIntegration, *this);
+  finish_step();
+}
+
+void World::rebuild_if_stale() {
+  if (!contacts_stale()) return;
+  const bool sort = sort_every_ > 0 && neighbors_.builds % static_cast<std::uint64_t>(sort_every_) == 0;
+  check_build(rebuild_contacts(sort), *this);
+}
+
+void World::finish_step() {
   for (auto& w : walls_) {
     w.ax += w.vx * dt_; w.bx += w.vx * dt_;
     w.ay += w.vy * dt_; w.by += w.vy * dt_;

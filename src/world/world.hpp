@@ -260,6 +260,12 @@ class World {
   friend void save_world(ArchiveWriter& out, World& world);
   friend void load_world(const ArchiveReader& in, World& world);
   friend struct WorldInternals;  // white-box tests of the engine (tests/world_internals.hpp)
+  friend struct RankAccess;      // one rank's phases of a step over ranks (parallel/rank_access.hpp)
+
+  // The first and last parts of advance(), which a step over ranks (parallel/) runs around its
+  // own force and integration phases: the list rebuilt if stale; the walls moved, the clock on.
+  void rebuild_if_stale();
+  void finish_step();
 
   Discs discs_;
   Clusters clusters_;
