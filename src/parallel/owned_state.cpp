@@ -1,0 +1,59 @@
+#include "parallel/owned_state.hpp"
+
+#include <stdexcept>
+#include <type_traits>
+
+namespace orogen {
+namespace {
+
+// Calls f(value) for each value rank `owner` keeps current (doubles, and the wall contacts'
+// flags), in one order for packing and unpacking.
+template <class F>
+void for_each_owned_value(RankAccess& a, const ExchangePlan& plan, int owner, F&& f) {
+  Discs& d = a.discs;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (plan.step_rank[i] != owner) continue;
+    f(d.x[i]); f(d.y[i]); f(d.vx[i]); f(d.vy[i]); f(d.omega[i]); f(d.theta[i]);
+  }
+  Clusters& c = a.clusters;
+  const auto r = static_cast<std::size_t>(owner);
+  for (auto k = static_cast<std::size_t>(plan.cut.body[r]); k < static_cast<std::size_t>(plan.cut.body[r + 1]); ++k) {
+    f(c.x[k]); f(c.y[k]); f(c.theta[k]); f(c.vx[k]); f(c.vy[k]); f(c.omega[k]);
+    f(c.rot_c[k]); f(c.rot_s[k]); f(c.fx[k]); f(c.fy[k]); f(c.torque[k]);
+  }
+  const auto& starts = a.neighbors.chunk_start;
+  if (!starts.empty()) {  // chunks are contiguous ranges of pairs
+    auto& xi = a.contacts.pairs.xi;
+    for (std::size_t p = starts[static_cast<std::size_t>(plan.cut.chunk[r])];
+         p < starts[static_cast<std::size_t>(plan.cut.chunk[r + 1])]; ++p)
+      f(xi[p]);
+  }
+  WallContacts& wc = a.contacts.walls;
+  for (std::size_t k = 0; k < wc.size(); ++k) {
+    if (plan.wall_rank[wc.disc[k]] != owner) continue;
+    f(wc.xi[k]); f(wc.touching[k]); f(wc.at_limit[k]);
+  }
+}
+
+}  // namespace
+
+void pack_owned_state(RankAccess& a, const ExchangePlan& plan, int owner, std::vector<double>& out) {
+  for_each_owned_value(a, plan, owner, [&](auto& v) { out.push_back(static_cast<double>(v)); });
+}
+
+void unpack_owned_state(RankAccess& a, const ExchangePlan& plan, int owner, std::span<const double> in) {
+  std::size_t k = 0;
+  for_each_owned_value(a, plan, owner, [&](auto& v) {
+    if (k == in.size()) throw std::logic_error("owned state of another size than its plan's");
+    v = static_cast<std::remove_reference_t<decltype(v)>>(in[k++]);
+  });
+  if (k != in.size()) throw std::logic_error("owned state of another size than its plan's");
+}
+
+std::size_t owned_state_size(RankAccess& a, const ExchangePlan& plan, int owner) {
+  std::size_t n = 0;
+  for_each_owned_value(a, plan, owner, [&](auto&) { ++n; });
+  return n;
+}
+
+}  // namespace orogen

@@ -1,0 +1,21 @@
+#pragma once
+// The state a rank alone keeps current in its copy of the world between list builds: the
+// motion of the discs it integrates, its bodies, the histories of its chunks' pairs and of its
+// discs' wall contacts. Sent whole to every rank before a list build (every copy then builds
+// the same list), and to one place to read the run out.
+#include <span>
+#include <vector>
+
+#include "parallel/exchange_plan.hpp"
+#include "parallel/rank_access.hpp"
+
+namespace orogen {
+
+// Appends rank `owner`'s state, in a fixed order, to `out`.
+void pack_owned_state(RankAccess& world, const ExchangePlan& plan, int owner, std::vector<double>& out);
+// Writes rank `owner`'s state, as packed, into `world`.
+void unpack_owned_state(RankAccess& world, const ExchangePlan& plan, int owner, std::span<const double> in);
+// How many values rank `owner`'s state packs into.
+std::size_t owned_state_size(RankAccess& world, const ExchangePlan& plan, int owner);
+
+}  // namespace orogen

@@ -1,0 +1,34 @@
+#pragma once
+// What a rank's step (rank_step.cpp) reaches inside its copy of the World: the state it
+// exchanges and the parts of World::advance it runs around its own phases. The World's friend
+// for this module alone, as tests/world_internals.hpp is for the tests.
+#include "world/world.hpp"
+
+namespace orogen {
+
+struct RankAccess {
+  World& world;
+  Discs& discs;
+  Clusters& clusters;
+  const std::vector<Wall>& walls;
+  const ContactLaw& law;
+  const BodyForce& body;
+  const NeighborList& neighbors;
+  ContactStore& contacts;
+  std::vector<DiscForce>& forces;
+  double& moved;
+  const double dt;
+
+  explicit RankAccess(World& w)
+      : world(w), discs(w.discs_), clusters(w.clusters_), walls(w.walls_), law(w.law_), body(w.body_),
+        neighbors(w.neighbors_), contacts(w.contacts_), forces(w.scratch_.forces), moved(w.moved_), dt(w.dt_) {}
+
+  // What World::step_stages does not run in a step over ranks (not yet: docs/domain-decomposition.md).
+  const Bonds& bonds() const { return world.bonds_; }
+  const StageHooks& hooks() const { return world.hooks_; }
+
+  void rebuild_if_stale() { world.rebuild_if_stale(); }
+  void finish_step() { world.finish_step(); }
+};
+
+}  // namespace orogen

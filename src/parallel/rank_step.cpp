@@ -1,0 +1,211 @@
+#include "parallel/rank_step.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "boundary/wall_forces.hpp"
+#include "contact/pair_forces.hpp"
+#include "integrate/integrator.hpp"
+#include "parallel/owned_state.hpp"
+
+namespace orogen {
+namespace {
+
+constexpr std::size_t kGhostValues = 5;  // x, y, vx, vy, omega: what the force phases read
+constexpr std::size_t kSumValues = 3;    // fx, fy, torque
+
+void check_supported(RankAccess& a) {
+  const char* missing = nullptr;
+  if (!a.bonds().id_a.empty()) missing = "bonds";
+  else if (a.discs.has_materials) missing = "named materials (per-disc friction and slip)";
+  else if (!a.hooks().empty(Stage::AfterForces) || !a.hooks().empty(Stage::AfterIntegration))
+    missing = "hooks inside the step";
+  if (missing)
+    throw std::invalid_argument(std::string("a step over ranks does not run ") + missing +
+                                " yet (docs/domain-decomposition.md)");
+}
+
+}  // namespace
+
+RankStep::RankStep(World& world, RankTransport& transport, RankCut cut)
+    : access_(world), transport_(&transport), cut_(std::move(cut)), rank_(transport.rank()),
+      ranks_(transport.ranks()) {
+  check_supported(access_);
+  if (!cut_)
+    cut_ = [](const NeighborList& L, const Discs& d, const Clusters& c, int ranks) {
+      return split_threads(L, d, c, ranks);
+    };
+}
+
+void RankStep::advance() {
+  for (const Phase phase : kStepPhases) {
+    post(phase);
+    take(phase);
+  }
+}
+
+void RankStep::post(Phase phase) {
+  DiscForce* forces = access_.forces.data();
+  const auto r = static_cast<std::size_t>(rank_);
+  switch (phase) {
+    case Phase::Build:
+      post_build();
+      break;
+    case Phase::Ghosts:
+      if (dropped(Exchange::Ghosts)) break;
+      for (int q = 0; q < ranks_; ++q) {
+        const auto& discs = plan_.ghosts(rank_, q);
+        if (q == rank_ || discs.empty()) continue;
+        const Discs& d = access_.discs;
+        buffer_.clear();
+        for (const auto i : discs) buffer_.insert(buffer_.end(), {d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i]});
+        transport_->send(q, buffer_);
+      }
+      break;
+    case Phase::EvenPairs:
+      pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, nullptr, access_.dt,
+                         forces, plan_.cut, r, 0);
+      if (!dropped(Exchange::PartialSums)) send_sums(plan_.partial_sums);
+      break;
+    case Phase::OddPairs:
+      pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, nullptr, access_.dt,
+                         forces, plan_.cut, r, 1);
+      if (!dropped(Exchange::PairSums)) send_sums(plan_.pair_sums);
+      break;
+    case Phase::Walls:
+      wall_forces_share(access_.contacts.walls, access_.discs, access_.walls, access_.law, access_.dt, WallSlip{},
+                        forces, plan_.cut, r);
+      if (!dropped(Exchange::WholeSums)) send_sums(plan_.whole_sums);
+      break;
+    case Phase::Integration:
+      integrate();
+      break;
+  }
+}
+
+void RankStep::take(Phase phase) {
+  switch (phase) {
+    case Phase::Build:
+      take_build();
+      break;
+    case Phase::Ghosts:
+      if (dropped(Exchange::Ghosts)) break;
+      for (int q = 0; q < ranks_; ++q) {
+        const auto& discs = plan_.ghosts(q, rank_);
+        if (q == rank_ || discs.empty()) continue;
+        buffer_.resize(kGhostValues * discs.size());
+        transport_->receive(q, buffer_);
+        Discs& d = access_.discs;
+        const double* v = buffer_.data();
+        for (const auto i : discs) {
+          d.x[i] = v[0]; d.y[i] = v[1]; d.vx[i] = v[2]; d.vy[i] = v[3]; d.omega[i] = v[4];
+          v += kGhostValues;
+        }
+      }
+      break;
+    case Phase::EvenPairs:
+      if (!dropped(Exchange::PartialSums)) receive_sums(plan_.partial_sums);
+      break;
+    case Phase::OddPairs:
+      if (!dropped(Exchange::PairSums)) receive_sums(plan_.pair_sums);
+      break;
+    case Phase::Walls:
+      if (!dropped(Exchange::WholeSums)) receive_sums(plan_.whole_sums);
+      break;
+    case Phase::Integration:
+      take_displacements();
+      break;
+  }
+}
+
+void RankStep::post_build() {
+  check_supported(access_);
+  // Every copy decides alike: the largest displacement was reduced over the ranks.
+  build_ = access_.world.contacts_stale();
+  if (!build_ || whole_) return;
+  buffer_.clear();
+  pack_owned_state(access_, plan_, rank_, buffer_);
+  for (int q = 0; q < ranks_; ++q)
+    if (q != rank_) transport_->send(q, buffer_);
+}
+
+void RankStep::take_build() {
+  if (build_ && !whole_) {
+    for (int q = 0; q < ranks_; ++q) {
+      if (q == rank_) continue;
+      buffer_.resize(owned_state_size(access_, plan_, q));
+      transport_->receive(q, buffer_);
+      unpack_owned_state(access_, plan_, q, buffer_);
+    }
+  }
+  if (build_) {
+    // The whole state in every copy: each builds the list of one process, sort included.
+    access_.rebuild_if_stale();
+    whole_ = true;
+  }
+  if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds) make_plan();
+  access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
+}
+
+void RankStep::make_plan() {
+  const ThreadSplit cut = cut_(access_.neighbors, access_.discs, access_.clusters, ranks_);
+  if (cut.threads() != ranks_) throw std::logic_error("a rank cut with another number of shares than ranks");
+  plan_ = make_exchange_plan(access_.neighbors, access_.contacts.walls, access_.discs, access_.clusters, cut);
+}
+
+void RankStep::send_sums(const Routes& routes) {
+  const DiscForce* forces = access_.forces.data();
+  for (int q = 0; q < ranks_; ++q) {
+    const auto& discs = routes(rank_, q);
+    if (q == rank_ || discs.empty()) continue;
+    buffer_.clear();
+    for (const auto i : discs) buffer_.insert(buffer_.end(), {forces[i].fx, forces[i].fy, forces[i].torque});
+    transport_->send(q, buffer_);
+  }
+}
+
+void RankStep::receive_sums(const Routes& routes) {
+  DiscForce* forces = access_.forces.data();
+  for (int q = 0; q < ranks_; ++q) {
+    const auto& discs = routes(q, rank_);
+    if (q == rank_ || discs.empty()) continue;
+    buffer_.resize(kSumValues * discs.size());
+    transport_->receive(q, buffer_);
+    const double* v = buffer_.data();
+    // Set, not added: the sum arrives whole so far, in the order of one process.
+    for (const auto i : discs) {
+      forces[i] = {v[0], v[1], v[2]};
+      v += kSumValues;
+    }
+  }
+}
+
+void RankStep::integrate() {
+  RankAccess& a = access_;
+  const Displacement moved = integrate_share(a.discs, a.clusters, a.forces.data(), a.body, a.dt, a.neighbors.x_ref.data(),
+                                             a.neighbors.y_ref.data(), plan_.cut, static_cast<std::size_t>(rank_));
+  max2_ = moved.max2;
+  not_finite_ = static_cast<double>(moved.not_finite);
+  buffer_ = {max2_, not_finite_};
+  for (int q = 0; q < ranks_; ++q)
+    if (q != rank_) transport_->send(q, buffer_);
+}
+
+void RankStep::take_displacements() {
+  buffer_.resize(2);
+  for (int q = 0; q < ranks_; ++q) {
+    if (q == rank_) continue;
+    transport_->receive(q, buffer_);
+    max2_ = std::max(max2_, buffer_[0]);  // a max is exact in any order
+    not_finite_ += buffer_[1];
+  }
+  access_.moved = Displacement{max2_, static_cast<std::int64_t>(not_finite_)}.distance();
+  // Integration zeroed the sums it used; those this rank summed for others stay: clear them,
+  // as one process holds only zeros between steps.
+  std::fill(access_.forces.begin(), access_.forces.end(), DiscForce{0.0, 0.0, 0.0});
+  access_.finish_step();
+  whole_ = ranks_ == 1;
+}
+
+}  // namespace orogen

@@ -1,0 +1,78 @@
+#pragma once
+// One rank's time step in a run cut between ranks that each hold a copy of the World and talk
+// only through a RankTransport (docs/domain-decomposition.md). The step is World::advance's,
+// cut into phases at the places where a thread of one process would read what another wrote;
+// each phase first computes and sends (post), then receives (take). Every floating-point
+// operation then has the operands, and the order, of one process: the same bits.
+//   Build        a stale list: every rank's owned state to every rank, the same build in each
+//                copy, a new cut and plan (exchange_plan.hpp)
+//   Ghosts       the motion of the discs this rank reads but another moved
+//   EvenPairs    the even chunks; their running sums to the odd chunk's rank
+//   OddPairs     the odd chunks; whole pair sums to the wall owner of a disc on a wall
+//   Walls        the wall forces of the disc range; whole sums to the integrating rank
+//   Integration  the free discs of the disc range and the bodies of the body range; the largest
+//                displacement to every rank; walls moved, the clock on
+// Not yet: bonds, named materials, hooks inside the step (std::invalid_argument).
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "parallel/exchange_plan.hpp"
+#include "parallel/rank_access.hpp"
+#include "parallel/rank_transport.hpp"
+
+namespace orogen {
+
+enum class Phase : std::uint8_t { Build, Ghosts, EvenPairs, OddPairs, Walls, Integration };
+inline constexpr std::array<Phase, 6> kStepPhases = {Phase::Build,    Phase::Ghosts, Phase::EvenPairs,
+                                                     Phase::OddPairs, Phase::Walls,  Phase::Integration};
+
+// The exchanges a test may drop, to show that the results then differ.
+enum class Exchange : std::uint8_t { Ghosts, PartialSums, PairSums, WholeSums };
+
+// How the step is cut into ranks after a build: split_threads with one share per rank unless
+// given (tests give lopsided cuts).
+using RankCut = std::function<ThreadSplit(const NeighborList&, const Discs&, const Clusters&, int ranks)>;
+
+class RankStep {
+ public:
+  // `world` must be the same in every rank (a copy); std::invalid_argument if it has what a
+  // step over ranks does not run yet.
+  RankStep(World& world, RankTransport& transport, RankCut cut = {});
+
+  void post(Phase phase);
+  void take(Phase phase);
+  // All phases in turn: a rank of its own (a transport whose sends do not wait).
+  void advance();
+
+  const ExchangePlan& plan() const { return plan_; }
+  World& world() { return access_.world; }
+  RankAccess& access() { return access_; }
+  void drop_for_testing(Exchange e) { dropped_[static_cast<std::size_t>(e)] = true; }
+
+ private:
+  bool dropped(Exchange e) const { return dropped_[static_cast<std::size_t>(e)]; }
+  void post_build();
+  void take_build();
+  void make_plan();
+  // The discs' force sums along `routes`, out of this rank, or into it (set, not added).
+  void send_sums(const Routes& routes);
+  void receive_sums(const Routes& routes);
+  void integrate();
+  void take_displacements();
+
+  RankAccess access_;
+  RankTransport* transport_;
+  RankCut cut_;
+  int rank_, ranks_;
+  ExchangePlan plan_;
+  bool whole_ = true;  // this copy holds every rank's current state (a fresh copy, or just built)
+  bool build_ = false;  // this step rebuilds the list
+  double max2_ = 0;
+  double not_finite_ = 0;
+  std::vector<double> buffer_;
+  std::array<bool, 4> dropped_{};
+};
+
+}  // namespace orogen
