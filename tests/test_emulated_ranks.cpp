@@ -159,7 +159,9 @@ void print_volume(const World& start, int ranks, int steps) {
   EmulatedRanks many(start, ranks);
   for (int s = 0; s < steps; ++s) many.advance();
   const ExchangePlan& plan = many.rank(0).plan();
-  std::cout << start.discs().size() << " discs, " << plan.cut.chunk.back() << " chunks, " << ranks << " ranks:\n";
+  std::cout << start.discs().size() << " discs, " << plan.cut.chunk.back() << " chunks, " << ranks << " ranks, "
+            << many.gathered().neighbors().builds - start.neighbors().builds << " list builds in " << steps
+            << " steps:\n";
   for (int r = 0; r < ranks; ++r)
     for (int q = 0; q < ranks; ++q) {
       if (q == r) continue;
@@ -180,6 +182,13 @@ void print_volume(const World& start, int ranks, int steps) {
 TEST(EmulatedRanks, ExchangeVolume) {
   const World start = mixed_heap();
   for (int ranks : {2, 4}) print_volume(start, ranks, 100);
+}
+
+// The same for a layer of some 19,000 discs, 1500 d long and about 10 d thick (seconds to settle):
+//   orogen_tests --gtest_filter='*ExchangeVolumeOfALongLayer' --gtest_also_run_disabled_tests
+TEST(EmulatedRanks, DISABLED_ExchangeVolumeOfALongLayer) {
+  const World start = mixed_heap(16, 700, 5000);
+  for (int ranks : {2, 4, 8}) print_volume(start, ranks, 200);
 }
 
 }  // namespace
