@@ -9,74 +9,14 @@
 #include <iostream>
 
 #include "parallel/emulated_ranks.hpp"
-#include "util/random.hpp"
-#include "world_fixtures.hpp"
-#include "world_internals.hpp"
+#include "ranks_world.hpp"
 
 namespace orogen {
 namespace {
 
-// A settling heap of free discs and three-disc clusters in a rough box, long in x so that the
-// list has many chunks (as tests/test_thread_split.cpp's), with a kinematic body and a
-// kinematic disc, the right wall pushing in, and a sort at every second list build.
-World mixed_heap(int rows = 6, int cols = 50, int settle_steps = 5000) {
-  World w;
-  inside(w).law.kn = 1e4;
-  inside(w).law.ks = 5e3;
-  inside(w).law.mu = 0.5;
-  const double width = 2.15 * cols + 3.2, height = 2.4 * rows + 2;
-  w.set_walls({testing::wall(0, 0, width, 0, WallFriction::Rough, 0.5),
-               testing::wall(0, 0, 0, height, WallFriction::Rough, 0.5),
-               testing::wall(width, 0, width, height, WallFriction::Rough, 0.5)});
-  Random rng(3);
-  for (int row = 0; row < rows; ++row)
-    for (int col = 0; col < cols; ++col) {
-      // Rows shifted by half a column, so that the rows settle into each other's gaps.
-      const double x = 1.6 + col * 2.15 + (row % 2) * 1.05 + rng.uniform(-0.04, 0.04), y = 0.6 + row * 2.0;
-      if ((row + col) % 3 == 0) {  // a cluster: three touching discs of radius 0.5
-        const std::array<std::size_t, 3> idx = {w.add_disc(x - 0.5, y, 0.5), w.add_disc(x + 0.5, y, 0.5),
-                                                w.add_disc(x, y + 0.866025403784, 0.5)};
-        const double vx = rng.uniform(-0.5, 0.5);
-        for (const auto i : idx) inside(w).discs.vx[i] = vx;
-        w.add_cluster(idx);
-      } else {
-        const auto i = w.add_disc(x, y + 0.4, 0.5 * rng.uniform(0.7, 1.0));
-        inside(w).discs.vx[i] = rng.uniform(-0.5, 0.5);
-      }
-    }
-  update_cluster_discs(inside(w).clusters, inside(w).discs);
-  inside(w).dt = 0.5 * w.stable_dt();
-  w.set_sort_every(2);
-  w.edit_motion([&](MotionEdit& e) {
-    e.cluster(1, Motion::Kinematic, 0.02, 0);
-    for (std::size_t i = 0; i < w.discs().size(); ++i)
-      if (w.discs().cluster[i] < 0) { e.disc(i, Motion::Kinematic, -0.02, 0); break; }
-  });
-  for (int s = 0; s < settle_steps; ++s) w.advance();
-  inside(w).walls[2].vx = -0.05;  // the right wall pushes in: its contacts change, the list follows
-  return w;
-}
-
-// Everything a step changes, in one array of doubles: equal arrays are equal bits.
-std::vector<double> state_of(const World& w) {
-  std::vector<double> s;
-  const Discs& d = w.discs();
-  for (const auto* a : {&d.x, &d.y, &d.vx, &d.vy, &d.omega, &d.theta}) s.insert(s.end(), a->begin(), a->end());
-  for (const auto id : d.id) s.push_back(static_cast<double>(id));  // the order of a sort
-  const Clusters& c = w.clusters();
-  for (const auto* a : {&c.x, &c.y, &c.theta, &c.vx, &c.vy, &c.omega, &c.rot_c, &c.rot_s})
-    s.insert(s.end(), a->begin(), a->end());
-  s.insert(s.end(), w.contacts().pairs.xi.begin(), w.contacts().pairs.xi.end());
-  s.insert(s.end(), w.contacts().walls.xi.begin(), w.contacts().walls.xi.end());
-  for (const auto t : w.contacts().walls.touching) s.push_back(t);
-  for (const auto& wall : w.walls()) s.insert(s.end(), {wall.ax, wall.ay, wall.bx, wall.by});
-  s.insert(s.end(), {w.moved(), w.time(), static_cast<double>(w.step()), static_cast<double>(w.neighbors().builds)});
-  return s;
-}
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
+using testing::mixed_heap;
+using testing::same_bits;
+using testing::state_of;
 
 // Cuts far from split_threads': one rank with almost all the chunks, discs cut far from the
 // chunks and bodies far from the discs, so that every exchange has something to carry.
