@@ -45,8 +45,10 @@ struct MpiTransport::State {
     std::size_t kept = 0;
     for (std::size_t k = 0; k < requests.size(); ++k) {
       if (requests[k] == MPI_REQUEST_NULL) continue;  // completed: Testsome set it to null
-      requests[kept] = requests[k];
-      buffers[kept] = std::move(buffers[k]);
+      if (kept != k) {  // a vector moved onto itself may be emptied: its send still in flight
+        requests[kept] = requests[k];
+        buffers[kept] = std::move(buffers[k]);
+      }
       ++kept;
     }
     requests.resize(kept);
