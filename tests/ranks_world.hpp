@@ -6,6 +6,7 @@
 #include <cstring>
 #include <vector>
 
+#include "contact/thread_split.hpp"
 #include "util/random.hpp"
 #include "world_fixtures.hpp"
 #include "world_internals.hpp"
@@ -72,6 +73,15 @@ inline std::vector<double> state_of(const World& w) {
 
 inline bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+// Cuts far from split_threads': one rank with almost all the chunks, discs cut far from the
+// chunks and bodies far from the discs, so that every exchange has something to carry.
+inline ThreadSplit lopsided_cut(const NeighborList& L, const Discs& d, const Clusters& c, int ranks) {
+  const auto chunks = static_cast<std::ptrdiff_t>(L.chunk_start.size()) - 1;
+  const auto n = static_cast<std::ptrdiff_t>(d.size()), nc = static_cast<std::ptrdiff_t>(c.size());
+  if (ranks == 2) return {{0, 1, chunks}, {0, n - 5, n}, {0, 1, nc}};
+  return {{0, chunks / 3, chunks - 1, chunks}, {0, 7, n / 2, n}, {0, nc - 2, nc - 1, nc}};
 }
 
 }  // namespace orogen::testing

@@ -14,18 +14,10 @@
 namespace orogen {
 namespace {
 
+using testing::lopsided_cut;
 using testing::mixed_heap;
 using testing::same_bits;
 using testing::state_of;
-
-// Cuts far from split_threads': one rank with almost all the chunks, discs cut far from the
-// chunks and bodies far from the discs, so that every exchange has something to carry.
-ThreadSplit lopsided_cut(const NeighborList& L, const Discs& d, const Clusters& c, int ranks) {
-  const auto chunks = static_cast<std::ptrdiff_t>(L.chunk_start.size()) - 1;
-  const auto n = static_cast<std::ptrdiff_t>(d.size()), nc = static_cast<std::ptrdiff_t>(c.size());
-  if (ranks == 2) return {{0, 1, chunks}, {0, n - 5, n}, {0, 1, nc}};
-  return {{0, chunks / 3, chunks - 1, chunks}, {0, 7, n / 2, n}, {0, nc - 2, nc - 1, nc}};
-}
 
 // Steps a copy of `start` one process's way and over `ranks` emulated ranks, comparing every
 // `every` steps.

@@ -1,7 +1,8 @@
 // One run's step over real MPI ranks (parallel/mpi_rank.hpp, docs/domain-decomposition.md step 2),
 // every bit as the step of one process. Run under mpiexec -n K (K = 1, 2, 3; CMakeLists.txt
 // registers each): every rank builds the same world as tests/test_emulated_ranks.cpp's, steps its
-// copy over MPI, and at every 25th step rank 0 gathers the whole state and compares it, memcmp,
+// copy over MPI (cut by split_threads, and for 2 and 3 ranks also by the emulation test's
+// lopsided cut), and at every 25th step rank 0 gathers the whole state and compares it, memcmp,
 // with the same world stepped by one process in rank 0 (discs' motion and order, clusters, pair
 // and wall contact histories, walls, clock, list builds). Then the transport itself: a buffer of
 // another size than expected is refused with a message, and buffers arrive in the order sent.
@@ -12,6 +13,7 @@
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "parallel/mpi_rank.hpp"
@@ -28,9 +30,9 @@ void fail(int rank, const std::string& what) {
 }
 
 // The step over MPI against one process, `steps` steps compared every `every`.
-void same_run_as_one_process(int steps, int every) {
+void same_run_as_one_process(int steps, int every, RankCut cut = {}, const char* how = "split_threads") {
   const World start = testing::mixed_heap();
-  MpiRank mine(start);
+  MpiRank mine(start, std::move(cut));
   const int rank = mine.rank();
   std::optional<World> one;
   if (rank == 0) one.emplace(start);
@@ -53,9 +55,9 @@ void same_run_as_one_process(int steps, int every) {
     const std::uint64_t rebuilt = one->neighbors().builds - builds;
     if (rebuilt < 4) fail(rank, "the run rebuilt its list only " + std::to_string(rebuilt) + " times");
     if (!differs)
-      std::printf("%d ranks: %d steps, %llu list builds (a sort every second), the gathered state equal to "
-                  "one process's at each of %d comparisons\n",
-                  mine.ranks(), steps, static_cast<unsigned long long>(rebuilt), compared);
+      std::printf("%d ranks cut by %s: %d steps, %llu list builds (a sort every second), the gathered state "
+                  "equal to one process's at each of %d comparisons\n",
+                  mine.ranks(), how, steps, static_cast<unsigned long long>(rebuilt), compared);
   }
 }
 
@@ -98,6 +100,10 @@ int main(int argc, char** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   try {
     orogen::same_run_as_one_process(300, 25);
+    // Cuts far from split_threads', so that every exchange carries something (2 and 3 ranks).
+    int ranks = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    if (ranks == 2 || ranks == 3) orogen::same_run_as_one_process(300, 25, orogen::testing::lopsided_cut, "lopsided_cut");
     orogen::transport_keeps_order_and_sizes();
   } catch (const std::exception& e) {
     orogen::fail(rank, std::string("exception: ") + e.what());
