@@ -30,12 +30,8 @@ inline World mixed_heap(int rows = 6, int cols = 50, int settle_steps = 5000) {
     for (int col = 0; col < cols; ++col) {
       // Rows shifted by half a column, so that the rows settle into each other's gaps.
       const double x = 1.6 + col * 2.15 + (row % 2) * 1.05 + rng.uniform(-0.04, 0.04), y = 0.6 + row * 2.0;
-      if ((row + col) % 3 == 0) {  // a cluster: three touching discs of radius 0.5
-        const std::array<std::size_t, 3> idx = {w.add_disc(x - 0.5, y, 0.5), w.add_disc(x + 0.5, y, 0.5),
-                                                w.add_disc(x, y + 0.866025403784, 0.5)};
-        const double vx = rng.uniform(-0.5, 0.5);
-        for (const auto i : idx) inside(w).discs.vx[i] = vx;
-        w.add_cluster(idx);
+      if ((row + col) % 3 == 0) {
+        add_triangle_cluster(w, x, y, rng.uniform(-0.5, 0.5));
       } else {
         const auto i = w.add_disc(x, y + 0.4, 0.5 * rng.uniform(0.7, 1.0));
         inside(w).discs.vx[i] = rng.uniform(-0.5, 0.5);

@@ -28,10 +28,8 @@ World mixed_heap() {
   for (int row = 0; row < 5; ++row)
     for (int col = 0; col < 38; ++col) {
       const double x = 1.6 + col * 3.1, y = 0.6 + row * 2.1;
-      if ((row + col) % 3 == 0) {  // a cluster: three touching discs of radius 0.5
-        const std::array<std::size_t, 3> idx = {w.add_disc(x - 0.5, y, 0.5), w.add_disc(x + 0.5, y, 0.5),
-                                                w.add_disc(x, y + 0.866025403784, 0.5)};
-        w.add_cluster(idx);
+      if ((row + col) % 3 == 0) {
+        testing::add_triangle_cluster(w, x, y);
       } else {
         const auto i = w.add_disc(x, y + 0.4, 0.5 * rng.uniform(0.7, 1.0));
         inside(w).discs.vx[i] = rng.uniform(-0.5, 0.5);

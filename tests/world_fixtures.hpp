@@ -1,5 +1,6 @@
 #pragma once
 // Small worlds for the physics tests.
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -39,6 +40,16 @@ inline double spring_energy(const World& w) {
     if (delta > 0) e += 0.5 * w.law().kn * delta * delta;
   }
   return e;
+}
+
+// A cluster of three touching discs of radius 0.5, its lower two centred at (x -+ 0.5, y), all
+// moving at vx; the discs' indices.
+inline std::array<std::size_t, 3> add_triangle_cluster(World& w, double x, double y, double vx = 0) {
+  const std::array<std::size_t, 3> idx = {w.add_disc(x - 0.5, y, 0.5), w.add_disc(x + 0.5, y, 0.5),
+                                          w.add_disc(x, y + 0.866025403784, 0.5)};
+  for (const auto i : idx) w.set_disc_velocity(i, vx, 0, 0);
+  w.add_cluster(idx);
+  return idx;
 }
 
 }  // namespace orogen::testing
