@@ -8,8 +8,7 @@ namespace orogen {
 
 EmulatedRanks::EmulatedRanks(const World& world, int ranks, RankCut cut) : mailbox_(ranks) {
   if (ranks < 1) throw std::invalid_argument("a run over ranks needs at least one rank");
-  if (!world.hooks().empty(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration))
-    throw std::invalid_argument("a step over ranks does not run hooks inside the step yet (docs/domain-decomposition.md)");
+  check_steppable_over_ranks(world);  // the copies drop their hooks
   for (int r = 0; r < ranks; ++r) {
     copies_.push_back(std::make_unique<World>(world));
     transports_.push_back(std::make_unique<InProcessTransport>(mailbox_, r));

@@ -10,9 +10,7 @@ namespace orogen {
 namespace {
 
 const World& supported(const World& world) {
-  // A copy drops its hooks silently: they are checked on the original.
-  if (!world.hooks().empty(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration))
-    throw std::invalid_argument("a step over ranks does not run hooks inside the step yet (docs/domain-decomposition.md)");
+  check_steppable_over_ranks(world);  // the copy drops its hooks
   return world;
 }
 

@@ -23,10 +23,6 @@ struct RankAccess {
       : world(w), discs(w.discs_), clusters(w.clusters_), walls(w.walls_), law(w.law_), body(w.body_),
         neighbors(w.neighbors_), contacts(w.contacts_), forces(w.scratch_.forces), moved(w.moved_), dt(w.dt_) {}
 
-  // What World::step_stages does not run in a step over ranks (not yet: docs/domain-decomposition.md).
-  const Bonds& bonds() const { return world.bonds_; }
-  const StageHooks& hooks() const { return world.hooks_; }
-
   void rebuild_if_stale() { world.rebuild_if_stale(); }
   void finish_step() { world.finish_step(); }
 };

@@ -15,23 +15,23 @@ namespace {
 constexpr std::size_t kGhostValues = 5;  // x, y, vx, vy, omega: what the force phases read
 constexpr std::size_t kSumValues = 3;    // fx, fy, torque
 
-void check_supported(RankAccess& a) {
+}  // namespace
+
+void check_steppable_over_ranks(const World& world) {
   const char* missing = nullptr;
-  if (!a.bonds().id_a.empty()) missing = "bonds";
-  else if (a.discs.has_materials) missing = "named materials (per-disc friction and slip)";
-  else if (!a.hooks().empty(Stage::AfterForces) || !a.hooks().empty(Stage::AfterIntegration))
+  if (!world.bonds().id_a.empty()) missing = "bonds";
+  else if (world.discs().has_materials) missing = "named materials (per-disc friction and slip)";
+  else if (!world.hooks().empty(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration))
     missing = "hooks inside the step";
   if (missing)
     throw std::invalid_argument(std::string("a step over ranks does not run ") + missing +
                                 " yet (docs/domain-decomposition.md)");
 }
 
-}  // namespace
-
 RankStep::RankStep(World& world, RankTransport& transport, RankCut cut)
     : access_(world), transport_(&transport), cut_(std::move(cut)), rank_(transport.rank()),
       ranks_(transport.ranks()) {
-  check_supported(access_);
+  check_steppable_over_ranks(access_.world);
   if (!cut_)
     cut_ = [](const NeighborList& L, const Discs& d, const Clusters& c, int ranks) {
       return split_threads(L, d, c, ranks);
@@ -120,7 +120,7 @@ void RankStep::take(Phase phase) {
 }
 
 void RankStep::post_build() {
-  check_supported(access_);
+  check_steppable_over_ranks(access_.world);
   // Every copy decides alike: the largest displacement was reduced over the ranks.
   build_ = access_.world.contacts_stale();
   if (!build_ || whole_) return;

@@ -28,6 +28,10 @@ enum class Phase : std::uint8_t { Build, Ghosts, EvenPairs, OddPairs, Walls, Int
 inline constexpr std::array<Phase, 6> kStepPhases = {Phase::Build,    Phase::Ghosts, Phase::EvenPairs,
                                                      Phase::OddPairs, Phase::Walls,  Phase::Integration};
 
+// std::invalid_argument naming what a step over ranks does not run yet (bonds, named materials,
+// hooks inside the step). Check the world given, not a copy: a copy drops its hooks.
+void check_steppable_over_ranks(const World& world);
+
 // The exchanges a test may drop, to show that the results then differ.
 enum class Exchange : std::uint8_t { Ghosts, PartialSums, PairSums, WholeSums };
 
