@@ -1,8 +1,10 @@
-// `orogen run [CONFIG] --out DIR | --resume DIR | --from RUN[:K]`: one run (src/run/runner).
+// `orogen run [CONFIG] --out DIR | --resume DIR | --from RUN[:K]`: one run (src/run/runner), as
+// one process or, under mpirun, spread over the ranks.
 #include <iostream>
 #include <memory>
 #include <string>
 
+#include "parallel/mpi_session.hpp"
 #include "run/runner.hpp"
 #include "subcommand.hpp"
 #include "config/schema.hpp"
@@ -47,7 +49,20 @@ Subcommand add_run(CLI::App& parent) {
             } else {
               run.out = o->out;
             }
-            return run_command(run);
+            // Under mpirun every rank runs this one run, each a slab of it (docs/domain-decomposition.md).
+            if (MpiSession::launched_without_mpi()) {
+              std::cerr << "error: started by mpirun, but this build of orogen has no MPI: each process would run "
+                           "the whole run into the same folder; rebuild with MPI installed (OROGEN_MPI=ON), or run "
+                           "it without mpirun\n";
+              return 2;
+            }
+            const MpiSession mpi;
+            if (mpi.size() > 1) run.mpi = &mpi;
+            const int code = run_command(run);
+            // A rank that fails alone would leave the others waiting for it: end them all. A stop
+            // by a signal or a hook is agreed by every rank, which all end as here.
+            if (mpi.size() > 1 && code != 0 && code != kStoppedByHook && code < 128) mpi.abort(code);
+            return code;
           }};
 }
 

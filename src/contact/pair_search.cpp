@@ -14,12 +14,11 @@ PairSearchResult search_pairs(NeighborList& L, const CellBins& bins, const Discs
   const auto& cell_start = bins.cell_start;
   // Each cell against itself and its four forward neighbours in traversal order: (u, v+1) in
   // its own stripe and (u+1, v-1), (u+1, v), (u+1, v+1) in the next. Chunks of whole stripes,
-  // at most kMaxChunks of them: a number fixed by the geometry alone, so that the order of the
+  // at most kMaxPairChunks of them: a number fixed by the geometry alone, so that the order of the
   // force sums never depends on the thread count. Chunks are searched in parallel into lists
   // of their own, joined in chunk order.
-  constexpr std::int64_t kMaxChunks = 64;
   PairSearchResult result;
-  const std::int64_t stripes_per_chunk = (g.nu() + kMaxChunks - 1) / kMaxChunks;
+  const std::int64_t stripes_per_chunk = (g.nu() + kMaxPairChunks - 1) / kMaxPairChunks;
   const std::int64_t chunks = (g.nu() + stripes_per_chunk - 1) / stripes_per_chunk;
   result.stripes_per_chunk = stripes_per_chunk;
   // A chunk's pairs that touch now, then the rest, each part in search order: the force loop

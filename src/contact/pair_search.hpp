@@ -27,6 +27,11 @@ struct PairSearchResult {
   BuildStats stats;
 };
 
+// The most chunks a pair list has (fewer on a short domain): a number of the geometry alone,
+// so that the order of the sums does not depend on threads or ranks (a rank's slab is whole
+// chunks, so it also bounds the ranks of one run).
+inline constexpr std::int64_t kMaxPairChunks = 64;
+
 // Sets list.first, second (the lower stable id first; in each chunk the pairs that touch
 // first, then those apart, each part in search order) and chunk_start from the bins.
 PairSearchResult search_pairs(NeighborList& list, const CellBins& bins, const Discs& discs);

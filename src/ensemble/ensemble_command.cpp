@@ -8,7 +8,7 @@
 #include <thread>
 
 #include "config/config.hpp"
-#include "ensemble/ensemble_mpi.hpp"
+#include "parallel/mpi_session.hpp"
 #include "ensemble/ensemble_plan.hpp"
 #include "ensemble/ensemble_pool.hpp"
 #include "io/atomic_file.hpp"

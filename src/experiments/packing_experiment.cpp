@@ -38,6 +38,7 @@ bool PackingExperiment::advance(World& w) {
   w.set_friction(phase_ < Relaxing ? settle_.mu : mu_);
   w.advance();
   if (w.step() % check_every_ != 0) return true;
+  w.make_whole();  // the checks below read every disc (over ranks: every rank's state)
   if (w.time() > settle_.max_time)
     throw InstabilityError(fmt::format("the packing did not come to rest within settle.max_time = {} "
                                        "(mean kinetic energy per disc {:.3g} m g d, threshold {:.3g})",

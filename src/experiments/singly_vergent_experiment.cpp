@@ -76,8 +76,15 @@ bool SinglyVergentExperiment::advance(World& w) {
   if (shortening(w) >= spec_.shortening) return false;
   w.advance();
   // The laws act between the far wall and the backstop.
-  if (surface_.updates_at(w)) surface_.update(w, 0.0, w.wall(kBackstop).ax, spec_.surface.every * w.dt());
-  if (w.step() % kHousekeepingEvery == 0) remove_strays(w);
+  // Both stages read the discs: over ranks, every copy first gets the whole state.
+  if (surface_.updates_at(w)) {
+    w.make_whole();
+    surface_.update(w, 0.0, w.wall(kBackstop).ax, spec_.surface.every * w.dt());
+  }
+  if (w.step() % kHousekeepingEvery == 0) {
+    w.make_whole();
+    remove_strays(w);
+  }
   return true;
 }
 

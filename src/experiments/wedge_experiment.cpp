@@ -114,6 +114,7 @@ void WedgeExperiment::feed_slab(World& w) {
   slab_left_ += spec_.v * w.dt();
   if (slab_left_ <= window_pro_ - slab_reserve()) return;
   slab_left_ -= tile_.length;
+  w.make_whole();  // over ranks: every copy adds the tile to the whole state
   const std::size_t first_cluster = w.clusters().size();
   const auto [first, last] = stamp_tile(w, tile_, slab_left_, std::numeric_limits<double>::infinity(), on_base(w));
   apply_units(w, first, last, spec_.packing.seed);
@@ -232,18 +233,25 @@ bool WedgeExperiment::advance(World& w) {
   if (convergence(w) >= spec_.s_end) return false;
   w.advance();
   feed_slab(w);
-  if (spec_.erosion_height > 0 && w.step() % static_cast<std::uint64_t>(spec_.erosion_every) == 0) erode(w);
+  // Each stage below reads or changes the discs: over ranks, every copy first gets the whole state.
+  if (spec_.erosion_height > 0 && w.step() % static_cast<std::uint64_t>(spec_.erosion_every) == 0) {
+    w.make_whole();
+    erode(w);
+  }
   if (surface_.updates_at(w)) {
+    w.make_whole();
     surface_.update(w, window_pro_ - spec_.h0, x_end_, spec_.surface.every * w.dt(), on_base(w));
   }
   if (base_.active()) {
     if (w.step() % static_cast<std::uint64_t>(spec_.isostasy.every) == 0) {
+      w.make_whole();
       base_.solve(w.discs(), slab_left_, x_end_, w.step());
       check_base_depth(w);
     }
     place_base(w);
   }
   if (w.step() % kHousekeepingEvery == 0) {
+    w.make_whole();
     remove_strays(w);
     update_windows(w);
   }

@@ -123,22 +123,11 @@ void RankStep::post_build() {
   check_steppable_over_ranks(access_.world);
   // Every copy decides alike: the largest displacement was reduced over the ranks.
   build_ = access_.world.contacts_stale();
-  if (!build_ || whole_) return;
-  buffer_.clear();
-  pack_owned_state(access_, plan_, rank_, buffer_);
-  for (int q = 0; q < ranks_; ++q)
-    if (q != rank_) transport_->send(q, buffer_);
+  if (build_ && !whole_) send_owned_state();
 }
 
 void RankStep::take_build() {
-  if (build_ && !whole_) {
-    for (int q = 0; q < ranks_; ++q) {
-      if (q == rank_) continue;
-      buffer_.resize(owned_state_size(access_, plan_, q));
-      transport_->receive(q, buffer_);
-      unpack_owned_state(access_, plan_, q, buffer_);
-    }
-  }
+  if (build_ && !whole_) receive_owned_states();
   if (build_) {
     // The whole state in every copy: each builds the list of one process, sort included.
     access_.rebuild_if_stale();
@@ -146,6 +135,29 @@ void RankStep::take_build() {
   }
   if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds) make_plan();
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
+}
+
+void RankStep::make_whole() {
+  if (whole_) return;
+  send_owned_state();
+  receive_owned_states();
+  whole_ = true;
+}
+
+void RankStep::send_owned_state() {
+  buffer_.clear();
+  pack_owned_state(access_, plan_, rank_, buffer_);
+  for (int q = 0; q < ranks_; ++q)
+    if (q != rank_) transport_->send(q, buffer_);
+}
+
+void RankStep::receive_owned_states() {
+  for (int q = 0; q < ranks_; ++q) {
+    if (q == rank_) continue;
+    buffer_.resize(owned_state_size(access_, plan_, q));
+    transport_->receive(q, buffer_);
+    unpack_owned_state(access_, plan_, q, buffer_);
+  }
 }
 
 void RankStep::make_plan() {

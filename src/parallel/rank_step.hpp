@@ -49,6 +49,10 @@ class RankStep {
   void take(Phase phase);
   // All phases in turn: a rank of its own (a transport whose sends do not wait).
   void advance();
+  // Every rank's owned state into this copy (collective; nothing if it is whole already), so
+  // that a stage between steps reads, and may change, the state of one process in each copy.
+  void make_whole();
+  bool whole() const { return whole_; }
 
   const ExchangePlan& plan() const { return plan_; }
   World& world() { return access_.world; }
@@ -60,6 +64,9 @@ class RankStep {
   void post_build();
   void take_build();
   void make_plan();
+  // This rank's owned state to every other rank; theirs into this copy.
+  void send_owned_state();
+  void receive_owned_states();
   // The discs' force sums along `routes`, out of this rank, or into it (set, not added).
   void send_sums(const Routes& routes);
   void receive_sums(const Routes& routes);

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -102,6 +103,14 @@ class Run {
   // RunOptions::between_steps: `fn` after every `every`-th step (none: the CLI's run).
   void between_steps(BetweenSteps fn, std::uint64_t every);
 
+  // Makes this run rank `rank` of a run over MPI ranks (mpirun -n K orogen run, K > 1): every
+  // rank runs this driver on its copy of the world (stepped over the ranks: World::step_as_rank)
+  // and gathers it whole before each output and checkpoint; rank 0 alone writes files. The
+  // ranks look for a stop signal every 64 steps and agree through `max_over_ranks` (collective),
+  // so that all stop at one step.
+  void as_rank(int rank, std::function<double(double)> max_over_ranks);
+  bool writes_files() const { return rank_ == 0; }
+
   World& world() { return world_; }
   const std::string& branch_from() const { return branch_from_; }
   const std::string& checkpoint_config() const { return checkpoint_config_; }
@@ -116,6 +125,7 @@ class Run {
   // One output step: the snapshot, the .vtp file, a series row, removals.csv, run.pvd, and
   // the in-run analysis when due.
   void output();
+  void write_output_files();  // the files of output(): snapshot, .vtp, series row, event logs
 
   // summary.csv: the series format with a single row, one column per result.
   void write_summary();
@@ -156,6 +166,11 @@ class Run {
   std::string branch_from_;       // a branch: "SOURCE_DIR:OUTPUT"
   bool branch_start_ = false;     // the next output is a branch's output 0
   std::map<std::string, std::vector<double>> branch_fields_;  // its fields, by name
+  int rank_ = 0;                  // a run over MPI ranks: this process's rank (as_rank)
+  std::function<double(double)> max_over_ranks_;  // and how the ranks agree; none in one process
+  // The stop signal this step should act on: this process's, or in a run over ranks the ranks'
+  // agreed one every 64 steps.
+  int stop_signal() const;
   std::optional<SnapshotWriter> snapshots_;
   std::optional<CsvSeries> series_;
 };

@@ -53,7 +53,7 @@ int Run::loop(Progress& progress) {
                  world_.step(), world_.time(), state_.outputs - 1);
       return -1;
     }
-    if (const int sig = StopSignals::received(); sig != 0) {
+    if (const int sig = stop_signal(); sig != 0) {
       progress.finish();
       checkpoint();
       log().info("stopped by {} at step {} (t = {:.6g}) after output {}, with a checkpoint; continue with orogen run "
@@ -64,9 +64,12 @@ int Run::loop(Progress& progress) {
   }
   progress.finish();
   if (state_.output_times.empty() || world_.step() != last_output_step_) output();
-  exp_->finish(world_, dir_);
-  write_summary();
-  for (const auto& observer : observers_) observer(state_.outputs, true);  // e.g. the outputs since the last analysis.every
+  world_.make_whole();
+  if (writes_files()) {
+    exp_->finish(world_, dir_);
+    write_summary();
+    for (const auto& observer : observers_) observer(state_.outputs, true);  // e.g. the outputs since the last analysis.every
+  }
   state_.finished = true;
   checkpoint();
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -76,6 +79,17 @@ int Run::loop(Progress& progress) {
              world_.neighbors().builds);
   if (const auto threads = tuner.summary(); !threads.empty()) log().info("threads: {}", threads);
   return 0;
+}
+
+int Run::stop_signal() const {
+  if (!max_over_ranks_) return StopSignals::received();
+  if ((world_.step() & 63) != 0) return 0;
+  return static_cast<int>(max_over_ranks_(StopSignals::received()));
+}
+
+void Run::as_rank(int rank, std::function<double(double)> max_over_ranks) {
+  rank_ = rank;
+  max_over_ranks_ = std::move(max_over_ranks);
 }
 
 void Run::between_steps(BetweenSteps fn, std::uint64_t every) {

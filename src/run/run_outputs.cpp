@@ -47,6 +47,21 @@ std::vector<std::string> Run::preamble() const {
 }
 
 void Run::output() {
+  world_.make_whole();  // over ranks: every copy holds the state of one process
+  if (writes_files()) write_output_files();
+  state_.output_times.push_back(world_.time());
+  ++state_.outputs;
+  last_output_step_ = world_.step();
+  if (!branch_start_) exp_->after_output(world_);  // a branch's state has seen its output already
+  branch_start_ = false;
+  if (!writes_files()) return;
+  if (write_vtp_) write_pvd_file();
+  for (const auto& observer : observers_) observer(state_.outputs, false);
+  // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
+  if (state_.outputs == abort_after_outputs_) std::_Exit(137);
+}
+
+void Run::write_output_files() {
   SnapshotFrame frame;
   frame.step = static_cast<std::int64_t>(world_.step());
   frame.time = world_.time();
@@ -64,19 +79,11 @@ void Run::output() {
   state_.vtp_digests.push_back(write_vtp_ ? write_vtp(dir_ / vtp_file_name(state_.outputs), frame) : 0);
   series_->add_row(exp_->measure(world_));
   write_event_logs();
-  state_.output_times.push_back(world_.time());
-  ++state_.outputs;
-  last_output_step_ = world_.step();
-  if (!branch_start_) exp_->after_output(world_);  // a branch's state has seen its output already
-  branch_start_ = false;
-  if (write_vtp_) write_pvd_file();
-  for (const auto& observer : observers_) observer(state_.outputs, false);
-  // Test hook (--abort-after-outputs): die like a kill, with no cleanup.
-  if (state_.outputs == abort_after_outputs_) std::_Exit(137);
 }
 
 // summary.csv: the series format with a single row, one column per result.
 void Run::write_summary() {
+  if (!writes_files()) return;
   const auto values = exp_->summary(world_);
   if (values.empty()) return;
   std::vector<CsvSeries::Column> cols;
@@ -104,6 +111,8 @@ void Run::write_event_logs() {
 }
 
 void Run::checkpoint() {
+  world_.make_whole();
+  if (!writes_files()) return;
   // The logs first: a kill between the two leaves rows after the old checkpoint, which a resume
   // accepts; the other order would leave a checkpoint whose removals the file lacks. An output
   // of this step has written them already.

@@ -62,6 +62,10 @@ void Run::build_on_setup(const BeforeFirstOutput& fn) {
 
 // Writes output 0 and a checkpoint at once, so that from here on a killed run resumes.
 void Run::start_fresh() {
+  if (!writes_files()) {  // another rank of a run over ranks: output 0's gather and state alone
+    output();
+    return;
+  }
   snapshots_.emplace(dir_ / "snapshots.h5", metadata());
   series_.emplace(dir_ / "series.csv", csv_columns(), preamble());
   if (write_vtp_) fs::create_directories(dir_ / "vtp");
@@ -94,13 +98,16 @@ void Run::load_checkpoint(bool extending) {
   if (in.has("run.branch_from")) branch_from_ = in.get_string("run.branch_from");
   checkpoint_config_ = in.get_string("run.config");
   if (in.has("run.vtp_digests")) in.get("run.vtp_digests", state_.vtp_digests);
-  check_kept_files(in.has("run.series_digest") ? std::optional(in.get_scalar<std::uint64_t>("run.series_digest"))
-                                               : std::nullopt);
+  if (writes_files())  // another rank of a run over ranks reads the checkpoint alone
+    check_kept_files(in.has("run.series_digest")
+                         ? std::optional(in.get_scalar<std::uint64_t>("run.series_digest"))
+                         : std::nullopt);
 }
 
 // Continues the outputs after the checkpoint's last one; later ones are dropped and written
 // again by the resumed run.
 void Run::reopen_outputs() {
+  if (!writes_files()) return;
   snapshots_.emplace(SnapshotWriter::reopen(dir_ / "snapshots.h5", state_.outputs));
   snapshots_->set_metadata_string(kConfigAttr, config_.to_toml());  // an extension's new end
   series_->truncate(static_cast<std::size_t>(state_.outputs));

@@ -19,6 +19,8 @@
 #include "exhumation/analyze_command.hpp"
 #include "experiments/spec_from_config.hpp"
 #include "io/atomic_file.hpp"
+#include "parallel/mpi_session.hpp"
+#include "parallel/mpi_stepping.hpp"
 #include "run/run.hpp"
 #include "run/run_folder.hpp"
 #include "run/setup_report.hpp"
@@ -30,7 +32,9 @@ namespace orogen {
 namespace {
 
 // The log goes to run.log and to stderr; the stderr sink also carries the progress line.
-std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir, const std::shared_ptr<StatusLineSink>& console) {
+std::shared_ptr<spdlog::logger> make_logger(const fs::path& dir, const std::shared_ptr<StatusLineSink>& console,
+                                            bool writes_files) {
+  if (!writes_files) return std::make_shared<spdlog::logger>("orogen");  // another rank: rank 0 logs the run
   auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "run.log").string());
   console->set_level(spdlog::level::info);
   auto log = std::make_shared<spdlog::logger>("orogen", spdlog::sinks_init_list{file, console});
@@ -122,12 +126,13 @@ void build_branch(Run& run, const BranchSource& source, const fs::path& out) {
 
 // Undoes claim_for_new_run after a set-up that failed (bad input, unstable set-up): nothing
 // of the run is left behind.
-void release_new_run(const RunOptions& opt, RunFolderLock& lock) {
+void release_new_run(const RunOptions& opt, std::optional<RunFolderLock>& lock) {
+  if (!lock) return;  // another rank of a run over ranks: rank 0 owns the folder
   spdlog::drop("orogen");  // run.log is closed once the last logger holding it goes
   std::error_code ec;
   fs::remove(opt.out / "config.toml", ec);
   fs::remove(opt.out / "run.log", ec);
-  lock.abandon();
+  lock->abandon();
 }
 
 std::string override_key(const std::string& assignment) { return assignment.substr(0, assignment.find('=')); }
@@ -217,7 +222,7 @@ Config run_configuration(const RunOptions& opt, const ResumeOverrides& resume,
 // by a signal, an instability); a new run's folder is released where it cannot be resumed.
 std::optional<int> build_first_state(Run& run, const RunOptions& opt, const std::optional<BranchSource>& source,
                                      spdlog::logger& logger, StatusLineSink& console, Progress& progress,
-                                     RunFolderLock& lock) {
+                                     std::optional<RunFolderLock>& lock) {
   try {
     const SetupReport report(logger, console, progress, source.has_value());
     if (source) {
@@ -249,6 +254,45 @@ std::optional<int> build_first_state(Run& run, const RunOptions& opt, const std:
   return std::nullopt;
 }
 
+// What `mpirun -n K orogen run` (K > 1) does not run: code of the user's inside or between the
+// steps (the Python package's hooks) and branches (their replay runs one process).
+void check_runnable_over_ranks(const RunOptions& opt, int ranks) {
+  const char* refused = !opt.from.empty()                           ? "a branch (--from)"
+                        : opt.between_steps || opt.before_first_output ? "the Python package's hooks"
+                        : opt.surface_law                              ? "a Python surface law"
+                                                                        : nullptr;
+  if (refused)
+    throw UsageError(fmt::format("a run over {} MPI ranks cannot run {} yet: run it as one process "
+                                 "(docs/domain-decomposition.md)",
+                                 ranks, refused));
+}
+
+// Hands the steps of the run's world to this MPI rank. Refused, with the folder of a new run
+// released, where the world has what a step over ranks does not run yet (bonds, named
+// materials, the constant-velocity base's hook inside the step) or cannot be cut into as many
+// slabs as ranks (a rank's slab is whole chunks of the pair list).
+std::unique_ptr<MpiStepping> step_over_ranks(Run& run, const RunOptions& opt, std::optional<RunFolderLock>& lock,
+                                             spdlog::logger& logger) {
+  const int ranks = opt.mpi->size();
+  const auto& chunk_start = run.world().neighbors().chunk_start;
+  const std::size_t chunks = chunk_start.size() > 1 ? chunk_start.size() - 1 : static_cast<std::size_t>(kMaxPairChunks);
+  try {
+    if (static_cast<std::size_t>(ranks) > chunks)
+      throw std::invalid_argument(fmt::format(
+          "{} ranks are more than this world can be cut into: a rank's slab is whole chunks of the pair list, "
+          "and it has {} (at most {}, fewer on a short domain)",
+          ranks, chunks, kMaxPairChunks));
+    auto stepping = std::make_unique<MpiStepping>(run.world());
+    logger.info("stepping over {} MPI ranks (this log is rank 0's; the ranks gather the world before each stage, "
+                "output and checkpoint)",
+                ranks);
+    return stepping;
+  } catch (const std::invalid_argument& e) {
+    if (!opt.resume) release_new_run(opt, lock);
+    throw UsageError(fmt::format("cannot run over {} MPI ranks: {}", ranks, e.what()));
+  }
+}
+
 // Opens the outputs: after a checkpoint they continue (an extension first rewrites
 // config.toml with the new end), else output 0 and a checkpoint are written at once.
 void open_outputs(Run& run, const RunOptions& opt, bool from_checkpoint, const Config& stored,
@@ -258,7 +302,7 @@ void open_outputs(Run& run, const RunOptions& opt, bool from_checkpoint, const C
     run.start_fresh();
     return;
   }
-  if (!extending.empty()) {
+  if (!extending.empty() && run.writes_files()) {
     const std::string before = run.checkpoint_config();
     const std::string header =
         run.branch_from().empty() ? "" : fmt::format("{}{} (orogen run --from)\n", kBranchHeader, run.branch_from());
@@ -280,7 +324,13 @@ int run_command(const RunOptions& opt) {
     std::optional<BranchSource> source;
     if (!opt.from.empty()) source = find_branch_source(opt.from);
     const Config config = run_configuration(opt, resume, source);
-    if (!opt.resume && fs::exists(opt.out / "config.toml"))
+    // Under mpirun with K > 1 ranks every rank runs this command on the same configuration;
+    // rank 0 owns the folder and writes its files (docs/domain-decomposition.md).
+    const int rank = opt.mpi ? opt.mpi->rank() : 0;
+    const int ranks = opt.mpi ? opt.mpi->size() : 1;
+    const bool writer = rank == 0;
+    if (ranks > 1) check_runnable_over_ranks(opt, ranks);
+    if (writer && !opt.resume && fs::exists(opt.out / "config.toml"))
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
     auto experiment = make_experiment(config);
@@ -300,19 +350,20 @@ int run_command(const RunOptions& opt) {
 
     // Installed before the set-up, which can take minutes: a stop there ends the run cleanly.
     const StopSignals stop_signals;
-    RunFolderLock lock(opt.out);
+    std::optional<RunFolderLock> lock;
+    if (writer) lock.emplace(opt.out);
     // A resume without a checkpoint (killed during set-up) starts the run again from its set-up.
     const bool from_checkpoint = opt.resume && fs::exists(opt.out / "checkpoint.bin");
-    if (!opt.resume)
-      claim_for_new_run(opt, config, lock,
+    if (writer && !opt.resume)
+      claim_for_new_run(opt, config, *lock,
                         source ? fmt::format("{}{} (orogen run --from)\n", kBranchHeader, source->text()) : "");
     if (opt.resume && !from_checkpoint && is_branch_folder(opt.out))
       throw UsageError(fmt::format("--resume {}: this branch was stopped before its first checkpoint; remove the "
                                    "folder and start the branch again",
                                    opt.out.string()));
     // A resume from a checkpoint changes nothing before every kept file is checked (below).
-    int stale = from_checkpoint ? 0 : remove_temporary_files(opt.out);
-    if (opt.resume && !from_checkpoint) remove_run_outputs(opt.out);
+    int stale = from_checkpoint || !writer ? 0 : remove_temporary_files(opt.out);
+    if (writer && opt.resume && !from_checkpoint) remove_run_outputs(opt.out);
 
     // A resume's configuration as stored: the folder's, with only the extension keys changed.
     const std::vector<std::string>& extending = resume.extending;
@@ -320,21 +371,25 @@ int run_command(const RunOptions& opt) {
     Run run(stored, opt.out, std::move(experiment), &config);
     run.abort_after_outputs(opt.abort_after_outputs);
     run.between_steps(opt.between_steps, opt.between_every);
+    if (ranks > 1)
+      run.as_rank(rank, [mpi = opt.mpi](double mine) { return mpi->max({static_cast<int>(mine)}).front(); });
     if (from_checkpoint) {
       run.load_checkpoint(!extending.empty());
-      stale = remove_temporary_files(opt.out);
+      if (writer) stale = remove_temporary_files(opt.out);
     }
     auto console = std::make_shared<StatusLineSink>(stderr);
-    auto logger = make_logger(opt.out, console);
+    auto logger = make_logger(opt.out, console, writer);
     spdlog::drop("orogen");
     spdlog::register_logger(logger);
     logger->info("orogen {} {} in {} with {} thread(s)", OROGEN_VERSION, opt.resume ? "resume" : "run",
                  opt.out.string(), omp_get_max_threads());
     for (const auto& warning : config_warnings(config)) logger->warn("{}", warning);
     if (stale > 0) logger->info("removed {} temporary file(s) left by a killed write", stale);
-    Progress progress(progress_mode(config), console);
+    Progress progress(writer ? progress_mode(config) : Progress::Mode::Never, console);
     if (!from_checkpoint)
       if (const auto code = build_first_state(run, opt, source, *logger, *console, progress, lock)) return *code;
+    // From here on each rank steps its part of one world (the same set-up or checkpoint in each).
+    const std::unique_ptr<MpiStepping> over_ranks = ranks > 1 ? step_over_ranks(run, opt, lock, *logger) : nullptr;
     if (source)
       logger->info("branch of {} at output {} (step {}, t = {:.6g}), its state {}", source->dir.string(), source->output,
                    run.world().step(), run.world().time(),

@@ -15,6 +15,7 @@ namespace orogen {
 struct World;
 class Experiment;
 class Config;
+class MpiSession;
 
 // A rule called between steps (the Python package's hooks, python/orogen): it may read and
 // change the world through its API; returning true stops the run like SIGTERM, with a checkpoint.
@@ -39,6 +40,7 @@ struct RunOptions {
   std::uint64_t between_every = 0;              // called after steps that are multiples of this, before their output
   BeforeFirstOutput before_first_output;        // none: the CLI's run, untouched
   SurfaceScript surface_law;                    // a user's surface law (docs/surface.md); none: the keys' only
+  const MpiSession* mpi = nullptr;              // the CLI under mpirun: one run over its ranks (K > 1)
 };
 
 // run_command's exit code when between_steps asked the run to stop (it can be resumed).

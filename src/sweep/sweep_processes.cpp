@@ -1,4 +1,6 @@
 #include "sweep/sweep_processes.hpp"
+
+#include "parallel/mpi_session.hpp"
 #include "util/timestamp.hpp"
 
 #include <fcntl.h>
@@ -22,6 +24,12 @@ pid_t spawn_self(const std::vector<std::string>& args, const std::filesystem::pa
   std::vector<char*> argv;
   for (auto& s : argv_text) argv.push_back(s.data());
   argv.push_back(nullptr);
+  // The child is one process of its own even where this one is an MPI rank (an ensemble under
+  // mpirun): without the launcher's variables, its `orogen run` does not take itself for a rank.
+  std::vector<char*> envp;
+  for (char** e = environ; *e; ++e)
+    if (!MpiSession::launcher_variable(*e)) envp.push_back(*e);
+  envp.push_back(nullptr);
 
   const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (out < 0) throw std::runtime_error(fmt::format("cannot open {}: {}", log.string(), std::strerror(errno)));
@@ -48,7 +56,7 @@ pid_t spawn_self(const std::vector<std::string>& args, const std::filesystem::pa
     ::dup2(out, STDERR_FILENO);
     ::close_range(3, ~0U, 0);  // no sweep file descriptors (the lock, other logs) in the child
     // /proc/self/exe is this executable even if the file was rebuilt since the sweep started.
-    ::execv("/proc/self/exe", argv.data());
+    ::execve("/proc/self/exe", argv.data(), envp.data());
     static const char msg[] = "orogen sweep: cannot execute /proc/self/exe\n";
     [[maybe_unused]] const auto n = ::write(STDERR_FILENO, msg, sizeof msg - 1);
     ::_exit(127);

@@ -67,6 +67,10 @@ void check_build(const BuildStats& s, const World& w) {
 }  // namespace
 
 void World::advance() {
+  if (rank_.rank) {
+    rank_.rank->advance();
+    return;
+  }
   rebuild_if_stale();
   step_stages();
   hooks_.run(Stage::AfterIntegration, *this);

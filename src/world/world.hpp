@@ -31,6 +31,7 @@
 #include "particles/clusters.hpp"
 #include "particles/discs.hpp"
 #include "world/motion_edit.hpp"
+#include "world/rank_stepping.hpp"
 #include "world/stage_hooks.hpp"
 
 namespace orogen {
@@ -87,8 +88,16 @@ class World {
   StageHooks& hooks() { return hooks_; }
   const StageHooks& hooks() const { return hooks_; }
 
-  // One time step (stages listed above, hooks included).
+  // One time step (stages listed above, hooks included); in a rank's copy, the rank's step.
   void advance();
+  // Collective in a run over ranks: every rank's state in this copy, as one process holds it.
+  // A stage that reads or changes the discs, bodies or contacts calls it first; outside a
+  // run over ranks it does nothing (world/rank_stepping.hpp).
+  void make_whole() {
+    if (rank_.rank) rank_.rank->make_whole();
+  }
+  // Makes this world a rank's copy (null: its own again). The rank must outlive the link.
+  void step_as_rank(RankStepping* rank) { rank_.rank = rank; }
 
   // Stages 2-4 of a step (pair forces, wall forces, integration) in one thread team, each
   // thread on its share of `split` (one thread per share), or with none (advance) on the
@@ -288,6 +297,7 @@ class World {
   std::int64_t next_disc_id_ = 0, next_cluster_id_ = 0;
   std::vector<RemovalRecord> removals_;
   StageHooks hooks_;
+  RankSteppingLink rank_;
 };
 
 }  // namespace orogen

@@ -1,7 +1,8 @@
-#include "ensemble/ensemble_mpi.hpp"
+#include "parallel/mpi_session.hpp"
 
 #include <cstdlib>
 #include <string>
+#include <string_view>
 
 #ifdef OROGEN_HAVE_MPI
 #include <mpi.h>
@@ -45,6 +46,12 @@ MpiSession::~MpiSession() {
 #endif
 }
 
+void MpiSession::abort([[maybe_unused]] int code) const {
+#ifdef OROGEN_HAVE_MPI
+  if (active_) MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+}
+
 bool MpiSession::all(bool mine) const {
 #ifdef OROGEN_HAVE_MPI
   if (active_) {
@@ -65,6 +72,11 @@ std::vector<int> MpiSession::max(const std::vector<int>& mine) const {
   }
 #endif
   return mine;
+}
+
+bool MpiSession::launcher_variable(const char* entry) {
+  const std::string_view e(entry);
+  return e.starts_with("OMPI_") || e.starts_with("PMI_") || e.starts_with("PMIX_");
 }
 
 bool MpiSession::launched_without_mpi() { return !built_with_mpi() && launched_by_mpi(); }

@@ -1,7 +1,8 @@
 #pragma once
-// The little MPI that `orogen ensemble` needs: which rank this process is among how many,
-// agreeing on a verdict, and combining per-member exit statuses. Built without MPI (or run
-// outside mpirun) it is one rank of one, so the command works the same everywhere.
+// The little MPI of a command under mpirun (`orogen ensemble`, `orogen run` over ranks): which
+// rank this process is among how many, agreeing on a verdict, and combining per-member exit
+// statuses. Built without MPI (or run outside mpirun) it is one rank of one, so the commands
+// work the same everywhere.
 #include <vector>
 
 namespace orogen {
@@ -9,7 +10,7 @@ namespace orogen {
 class MpiSession {
  public:
   // Initialises MPI only when this process was started by an MPI launcher (mpirun sets
-  // OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_RANK): a plain `orogen ensemble` stays one process
+  // OMPI_COMM_WORLD_SIZE, PMI_SIZE or PMIX_RANK): a plain `orogen ensemble` or `orogen run` stays one process
   // and never pays for (or depends on) an MPI runtime.
   MpiSession();
   ~MpiSession();
@@ -24,11 +25,18 @@ class MpiSession {
   bool all(bool mine) const;
   // Element-wise maximum over the ranks, returned on every rank (a barrier too).
   std::vector<int> max(const std::vector<int>& mine) const;
+  // Ends every rank of the job with `code` (MPI_Abort): a rank that fails while the others
+  // wait for it in an exchange would otherwise leave them waiting. Outside MPI, nothing.
+  void abort(int code) const;
   // Whether this build has MPI at all.
   static bool built_with_mpi();
   // Started by mpirun, but built without MPI: every process would think itself the only one
   // and run every member, so the command refuses.
   static bool launched_without_mpi();
+  // Whether a name of the environment is one by which a launcher tells a process it is a rank
+  // (OMPI_*, PMI_*, PMIX_*): the child processes of a command that is a rank drop them, so
+  // that each is one process of its own.
+  static bool launcher_variable(const char* name_and_value);
 
  private:
   bool active_ = false;
