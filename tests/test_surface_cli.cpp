@@ -46,8 +46,9 @@ const std::string kSmallWedge =
     " --set output.progress=never --set output.vtp=false --set output.checkpoint_every=2";
 const std::string kEveryLawKeys =
     " --set surface.every=100 --set surface.diffusivity=0.2 --set surface.critical_slope=1.0"
-    " --set surface.erodibility=0.3 --set surface.windward=pro --set surface.windward_factor=3"
-    " --set surface.deposition=true --set surface.recycling=0.5 --set surface.base_level=1.02";
+    " --set surface.erodibility=1.0 --set surface.windward=pro --set surface.windward_factor=3"
+    " --set surface.deposition=true --set surface.recycling=0.5 --set surface.base_level=0.9"
+    " --set wedge.erosion_height=0";  // the laws alone erode
 const std::string kEveryLaw = kSmallWedge + kEveryLawKeys;
 
 // series.csv's rows as {column: value}.
@@ -121,7 +122,9 @@ TEST_F(SurfaceCli, EveryLawIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
 
   // Each removal with its law; deposits tagged with their time.
   const std::string removals = slurp(one / "removals.csv");
-  EXPECT_GT(count_of(removals, ",eroded_fluvial\n"), 10u) << removals;
+  // The rivers cut no deeper than the water they drain into (the sea at the base level): in
+  // this small wedge, a few particles.
+  EXPECT_GT(count_of(removals, ",eroded_fluvial\n"), 3u) << removals;
   EXPECT_GT(count_of(removals, ",eroded_hillslope\n"), 0u) << removals;
   const SnapshotReader reader(one / "snapshots.h5");
   const Snapshot last = reader.read(reader.count() - 1);

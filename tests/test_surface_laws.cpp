@@ -108,12 +108,14 @@ TEST(SurfaceLaws, AStreamPowerRiverUnderUpliftReachesTheSteadyProfile) {
     const StreamPower law{0.01, 0.5, slope_exponent};
     const River r = steady_river(law, uplift, rain, dx);
     const auto divide = static_cast<std::size_t>(std::max_element(r.h.begin(), r.h.end()) - r.h.begin());
-    EXPECT_EQ(divide, n / 2);
+    EXPECT_NEAR(static_cast<double>(divide), static_cast<double>(n / 2), 1.0);
+    // The divide drains to its lower neighbour (of two equal drops, the left one's).
+    const bool divide_drains_left = r.h[divide - 1] <= r.h[divide + 1];
     for (std::size_t j = 0; j < n; ++j) {
       if (j == divide) continue;
-      // Discharge: the columns from the divide down to this one (the divide drains to its left:
-      // of two equal drops, the left neighbour's is taken).
-      const double columns = static_cast<double>(j < divide ? divide - j + 1 : j - divide);
+      // Discharge: the columns from the divide down to this one, the divide's on its side.
+      const double columns = static_cast<double>(j < divide ? divide - j + (divide_drains_left ? 1 : 0)
+                                                            : j - divide + (divide_drains_left ? 0 : 1));
       EXPECT_DOUBLE_EQ(r.discharge[j], columns * dx) << j;
       const double slope = drop_to_receiver(r.h, j) / dx;
       EXPECT_NEAR(law.K * std::pow(r.discharge[j], law.m) * std::pow(slope, law.n), uplift, 1e-9) << j;
@@ -153,6 +155,31 @@ TEST(SurfaceLaws, TheImplicitRiverNeverCutsBelowItsReceiver) {
     EXPECT_GE(v, 0.0);
     EXPECT_LT(v, 1e-3);  // an enormous step: everything down to base level
   }
+}
+
+// A pit holds water up to the rim it spills over, and the sea stands at the base level: a river
+// cuts down to the water's surface, never to a pit's floor or below the base level, the columns
+// under water keep their height, and all the rain leaves by the outlets. (Cut to pit floors,
+// a rough granular surface was lowered pit by pit to the model's base.)
+TEST(SurfaceLaws, ARiverCutsDownToTheWaterInAPitNotToItsFloor) {
+  //                      0    1    2    3    4    5    6    7
+  std::vector<double> h = {1.0, 0.3, 2.0, 4.0, 2.5, 0.5, 1.5, 0.8};
+  const std::vector<double> start = h;
+  const ProfileEnds open{true, 0.9};
+  const std::vector<double> q = erode_fluvial(h, 1.0, {1.0, 0.5, 1.0}, std::vector<double>(h.size(), 1.0), 1e6, open);
+  // Under water (below the base level at the ends, or in the pit behind column 6): untouched.
+  for (const std::size_t j : {1u, 5u, 7u}) EXPECT_EQ(h[j], start[j]) << j;
+  // The rest cut down, in an enormous step, to the water they drain into: the sea at 0.9 (the
+  // pit at 5 spills over column 6, which is cut down to the sea, so the pit's water falls to
+  // it too), nowhere below.
+  for (const std::size_t j : {0u, 2u, 3u, 4u, 6u}) {
+    EXPECT_GE(h[j], 0.9) << j;
+    EXPECT_LT(h[j], 0.9 + 1e-3) << j;
+  }
+  // The divide (3) drains left, over the pit at 1: each outlet carries its side's rain.
+  EXPECT_DOUBLE_EQ(q[0], 4.0);
+  EXPECT_DOUBLE_EQ(q[7], 4.0);
+  EXPECT_DOUBLE_EQ(q[5], 2.0);  // the pit passes its own water and 4's on to its spill (6)
 }
 
 // The carry: a law lowering a column by 0.3 of a particle per update removes a particle every

@@ -1,7 +1,9 @@
 #include "surface/profile_laws.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace orogen {
@@ -63,27 +65,75 @@ void diffuse_nonlinear(std::vector<double>& h, double dx, double kappa, double c
 namespace {
 
 constexpr std::ptrdiff_t kOutside = -1;  // drains out of the profile, to the base level
-constexpr std::ptrdiff_t kNone = -2;     // a pit or a flat: no receiver
+constexpr std::ptrdiff_t kNone = -2;     // a flat with no lower neighbour: no receiver
 
-// Each column's receiver: the neighbour (or, at an open end, the base level beyond it) of the
-// largest drop below it; none where no neighbour is lower.
-std::vector<std::ptrdiff_t> receivers(const std::vector<double>& h, const ProfileEnds& ends) {
+// Where water stands: the lowest rim each column's water must climb to leave the profile by
+// each end (the highest column between it and the end, and at least the base level at an open
+// end; a closed end lets none out). Below the lower of its two rims a column lies under water (a
+// lake, or the sea below the base level), which stands at that rim.
+struct Rims {
+  std::vector<double> left, right;
+  double level(std::size_t j) const { return std::min(left[j], right[j]); }
+};
+
+Rims rims_of(const std::vector<double>& h, const ProfileEnds& ends) {
+  const std::size_t n = h.size();
+  const double outlet = ends.open ? ends.base_level : std::numeric_limits<double>::infinity();
+  Rims r{std::vector<double>(n), std::vector<double>(n)};
+  double rim = outlet;
+  for (std::size_t j = 0; j < n; ++j) r.left[j] = rim = std::max(rim, h[j]);
+  rim = outlet;
+  for (std::size_t j = n; j-- > 0;) r.right[j] = rim = std::max(rim, h[j]);
+  return r;
+}
+
+// Each column's receiver: under water, the neighbour towards the lower rim (where the lake
+// spills); above it, the neighbour (or, at an open end, the base level beyond it) whose water
+// surface lies lowest below it; none on a flat with no lower neighbour.
+std::vector<std::ptrdiff_t> receivers(const std::vector<double>& h, const Rims& rims, const ProfileEnds& ends) {
   const auto n = static_cast<std::ptrdiff_t>(h.size());
   std::vector<std::ptrdiff_t> out(h.size(), kNone);
   for (std::ptrdiff_t j = 0; j < n; ++j) {
+    const auto u = static_cast<std::size_t>(j);
+    if (rims.level(u) > h[u]) {
+      if (rims.left[u] <= rims.right[u]) out[u] = j > 0 ? j - 1 : kOutside;
+      else out[u] = j + 1 < n ? j + 1 : kOutside;
+      continue;
+    }
     double best = 0;
     auto consider = [&](std::ptrdiff_t to, double height) {
-      if (h[static_cast<std::size_t>(j)] - height > best) {
-        best = h[static_cast<std::size_t>(j)] - height;
-        out[static_cast<std::size_t>(j)] = to;
+      if (h[u] - height > best) {
+        best = h[u] - height;
+        out[u] = to;
       }
     };
-    if (j > 0) consider(j - 1, h[static_cast<std::size_t>(j - 1)]);
+    if (j > 0) consider(j - 1, rims.level(u - 1));
     else if (ends.open) consider(kOutside, ends.base_level);
-    if (j + 1 < n) consider(j + 1, h[static_cast<std::size_t>(j + 1)]);
+    if (j + 1 < n) consider(j + 1, rims.level(u + 1));
     else if (ends.open) consider(kOutside, ends.base_level);
   }
   return out;
+}
+
+// The columns, every receiver before the columns that drain into it: from the outlets and the
+// flats, up each chain of donors (one or two a column).
+std::vector<std::size_t> receivers_first(const std::vector<std::ptrdiff_t>& to) {
+  const std::size_t n = to.size();
+  std::vector<std::array<std::ptrdiff_t, 2>> donors(n, {-1, -1});
+  std::vector<std::size_t> order;
+  order.reserve(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (to[j] < 0) {
+      order.push_back(j);
+      continue;
+    }
+    auto& d = donors[static_cast<std::size_t>(to[j])];
+    (d[0] < 0 ? d[0] : d[1]) = static_cast<std::ptrdiff_t>(j);
+  }
+  for (std::size_t k = 0; k < order.size(); ++k)
+    for (const std::ptrdiff_t d : donors[order[k]])
+      if (d >= 0) order.push_back(static_cast<std::size_t>(d));
+  return order;
 }
 
 }  // namespace
@@ -93,22 +143,33 @@ std::vector<double> erode_fluvial(std::vector<double>& h, double dx, const Strea
   const std::size_t n = h.size();
   std::vector<double> discharge(n, 0.0);
   if (n == 0) return discharge;
-  const std::vector<std::ptrdiff_t> to = receivers(h, ends);
-  // Lowest first (ties by column): every receiver comes before the columns draining into it.
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return h[a] < h[b]; });
+  const Rims rims = rims_of(h, ends);
+  const std::vector<std::ptrdiff_t> to = receivers(h, rims, ends);
+  const std::vector<std::size_t> order = receivers_first(to);
   for (std::size_t j = 0; j < n; ++j) discharge[j] = precipitation[j] * dx;
   for (auto it = order.rbegin(); it != order.rend(); ++it)
     if (to[*it] >= 0) discharge[static_cast<std::size_t>(to[*it])] += discharge[*it];
   if (law.K <= 0 || dt <= 0) return discharge;
+  // The water surface after the step: a lake stands at its rim as the rim is cut down, and
+  // never below its floor; a river cuts down to the surface of what it drains into.
+  std::vector<double> surface(n);
   for (const std::size_t j : order) {
-    if (to[j] == kNone) continue;
-    const double base = to[j] == kOutside ? ends.base_level : h[static_cast<std::size_t>(to[j])];
+    const double base = to[j] == kOutside ? ends.base_level
+                        : to[j] == kNone   ? h[j]
+                                           : surface[static_cast<std::size_t>(to[j])];
+    if (to[j] == kNone || rims.level(j) > h[j]) {  // a flat, or under water: no river cuts here
+      surface[j] = std::max(h[j], base);
+      continue;
+    }
     const double c = law.K * std::pow(discharge[j], law.m) * dt / std::pow(dx, law.n);
     const double old = h[j];
+    if (old <= base) {
+      surface[j] = base;
+      continue;
+    }
     if (law.n == 1) {
       h[j] = (old + c * base) / (1 + c);
+      surface[j] = h[j];
       continue;
     }
     // Newton on g(z) = z - old + c (z - base)^n over z > base, from the old height down.
@@ -125,6 +186,7 @@ std::vector<double> erode_fluvial(std::vector<double>& h, double dx, const Strea
       z = next;
     }
     h[j] = z;
+    surface[j] = z;
   }
   return discharge;
 }

@@ -36,7 +36,11 @@ void diffuse_nonlinear(std::vector<double>& h, double dx, double kappa, double c
 
 // Stream power. Each column drains to its lower neighbour (the steeper descent; an end column may
 // drain out to the base level); the discharge of a column is its own precipitation times dx plus
-// the discharge of the columns that drain into it. Pits keep their height (deposition fills them).
+// the discharge of the columns that drain into it. Water fills each pit to the rim it spills
+// over (and stands at the base level beyond an open end): a column under water is not cut (its
+// floor keeps its height; deposition fills it), passes its water on towards the spill, and the
+// rivers that run into it cut down to the water's surface, not to its floor. Without this a
+// rough granular surface, whose pits are everywhere, would be cut through to the model's base.
 struct StreamPower {
   double K = 0;  // erodibility
   double m = 0.5;
