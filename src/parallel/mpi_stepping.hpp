@@ -3,6 +3,9 @@
 // built the same World (the same set-up, or the same checkpoint); from construction to
 // destruction World::advance() is this rank's part of the step and World::make_whole() the
 // gather of every rank's state into each copy (world/rank_stepping.hpp).
+#include <cstdint>
+#include <string>
+
 #include "parallel/mpi_transport.hpp"
 #include "parallel/rank_step.hpp"
 #include "world/rank_stepping.hpp"
@@ -24,6 +27,8 @@ class MpiStepping final : public RankStepping {
   int rank() const { return transport_.rank(); }
   int ranks() const { return transport_.ranks(); }
   MpiTransport& transport() { return transport_; }
+  // One line for the run's log: this rank's messages, bytes and waiting per step over `steps`.
+  std::string traffic_per_step(std::uint64_t steps) const;
 
  private:
   World& world_;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <stdexcept>
 #include <vector>
 
@@ -91,6 +92,8 @@ void MpiTransport::send(int to, std::span<const double> values) {
   check(MPI_Isend(copy.data(), static_cast<int>(copy.size()), MPI_DOUBLE, to, kTag, state_->comm, &request),
         "MPI_Isend");
   state_->requests.push_back(request);
+  ++traffic_.messages;
+  traffic_.values += copy.size();
 }
 
 void MpiTransport::receive(int from, std::span<double> values) {
@@ -98,7 +101,9 @@ void MpiTransport::receive(int from, std::span<double> values) {
     throw std::logic_error(fmt::format("MPI transport: rank {} cannot receive from rank {} of {}", rank_, from, ranks_));
   // The size first: a buffer of another size is left unread and named, not truncated.
   MPI_Status status;
+  const auto start = std::chrono::steady_clock::now();
   check(MPI_Probe(from, kTag, state_->comm, &status), "MPI_Probe");
+  traffic_.seconds_waiting += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int count = 0;
   check(MPI_Get_count(&status, MPI_DOUBLE, &count), "MPI_Get_count");
   if (count < 0 || static_cast<std::size_t>(count) != values.size())

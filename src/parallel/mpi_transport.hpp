@@ -7,6 +7,7 @@
 // order between two ranks on one communicator and tag) and throws std::logic_error if it holds
 // another number of values than expected, as the in-process mailbox does. The C API only
 // (mpi_transport.cpp); built without MPI, constructing one throws std::runtime_error.
+#include <cstdint>
 #include <memory>
 #include <span>
 
@@ -29,6 +30,14 @@ class MpiTransport final : public RankTransport {
   // Waits until every buffer sent so far has left this rank's hands.
   void flush();
 
+  // What this rank has sent, and how long it has waited in receive for a buffer to arrive (the
+  // time the ranks cost each other: exchange and imbalance together).
+  struct Traffic {
+    std::uint64_t messages = 0, values = 0;
+    double seconds_waiting = 0;
+  };
+  const Traffic& traffic() const { return traffic_; }
+
   static bool built_with_mpi();
   static bool initialised();  // MPI_Init has been called and MPI_Finalize not yet
 
@@ -36,6 +45,7 @@ class MpiTransport final : public RankTransport {
   struct State;
   std::unique_ptr<State> state_;
   int rank_ = 0, ranks_ = 1;
+  Traffic traffic_;
 };
 
 }  // namespace orogen

@@ -399,8 +399,11 @@ int run_command(const RunOptions& opt) {
     started = true;
     logger->info("{} discs, {} clusters, dt = {:.6g} (stable limit {:.6g}), k_n = {:.6g}", run.world().discs().size(),
                  run.world().clusters().size(), run.world().dt(), run.world().stable_dt(), run.world().law().kn);
+    const std::uint64_t first_step = run.world().step();
     try {
-      if (const int sig = run.loop(progress); sig != 0) return sig < 0 ? kStoppedByHook : 128 + sig;
+      const int sig = run.loop(progress);
+      if (over_ranks) logger->info("exchange: {}", over_ranks->traffic_per_step(run.world().step() - first_step));
+      if (sig != 0) return sig < 0 ? kStoppedByHook : 128 + sig;
     } catch (const InstabilityError& e) {
       progress.finish();
       logger->error("stopped: {}", e.what());
