@@ -49,4 +49,24 @@ ThreadSplit split_threads(const NeighborList& L, const Discs& d, const Clusters&
   return s;
 }
 
+ThreadSplit split_share(const ThreadSplit& cut, std::size_t r, int threads, const NeighborList& L) {
+  const std::ptrdiff_t c0 = cut.chunk[r], c1 = cut.chunk[r + 1];
+  const std::int64_t p0 = c0 < c1 ? L.chunk_start[static_cast<std::size_t>(c0)] : 0;
+  const std::int64_t p1 = c0 < c1 ? L.chunk_start[static_cast<std::size_t>(c1)] : 0;
+  const auto part = [threads](std::ptrdiff_t lo, std::ptrdiff_t hi, int t) { return lo + (hi - lo) * t / threads; };
+  ThreadSplit s{{c0}, {cut.disc[r]}, {cut.body[r]}};
+  for (int t = 1; t <= threads; ++t) {
+    std::ptrdiff_t k = c1;
+    if (t < threads) {
+      const std::int64_t target = p0 + (p1 - p0) * t / threads;
+      k = std::lower_bound(L.chunk_start.begin() + c0, L.chunk_start.begin() + c1, target) - L.chunk_start.begin();
+      k = std::max(k, s.chunk.back());
+    }
+    s.chunk.push_back(k);
+    s.disc.push_back(part(cut.disc[r], cut.disc[r + 1], t));
+    s.body.push_back(part(cut.body[r], cut.body[r + 1], t));
+  }
+  return s;
+}
+
 }  // namespace orogen

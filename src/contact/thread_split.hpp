@@ -27,6 +27,11 @@ struct ThreadSplit {
 // their discs are cut.
 ThreadSplit split_threads(const NeighborList& list, const Discs& discs, const Clusters& clusters, int threads);
 
+// Share `r` of `cut` cut again into `threads` shares (the threads of one rank of a run over
+// ranks): its chunks by their pairs, its discs and bodies in equal parts. The sums keep their
+// order for any cut (chunks two apart share no disc), so the bits are those of `cut`.
+ThreadSplit split_share(const ThreadSplit& cut, std::size_t r, int threads, const NeighborList& list);
+
 // The threads a step's loops use: all of them from kMinParallelItems discs on, else one.
 int step_threads(std::size_t discs);
 

@@ -47,7 +47,6 @@ void RankStep::advance() {
 
 void RankStep::post(Phase phase) {
   DiscForce* forces = access_.forces.data();
-  const auto r = static_cast<std::size_t>(rank_);
   switch (phase) {
     case Phase::Build:
       post_build();
@@ -64,18 +63,21 @@ void RankStep::post(Phase phase) {
       }
       break;
     case Phase::EvenPairs:
-      pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, nullptr, access_.dt,
-                         forces, plan_.cut, r, 0);
-      if (!dropped(Exchange::PartialSums)) send_sums(plan_.partial_sums);
+    case Phase::OddPairs: {
+      const int parity = phase == Phase::EvenPairs ? 0 : 1;
+      on_threads([&](const ThreadSplit& threads, std::size_t t) {
+        pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, nullptr,
+                           access_.dt, forces, threads, t, parity);
+      });
+      if (parity == 0 && !dropped(Exchange::PartialSums)) send_sums(plan_.partial_sums);
+      if (parity == 1 && !dropped(Exchange::PairSums)) send_sums(plan_.pair_sums);
       break;
-    case Phase::OddPairs:
-      pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, nullptr, access_.dt,
-                         forces, plan_.cut, r, 1);
-      if (!dropped(Exchange::PairSums)) send_sums(plan_.pair_sums);
-      break;
+    }
     case Phase::Walls:
-      wall_forces_share(access_.contacts.walls, access_.discs, access_.walls, access_.law, access_.dt, WallSlip{},
-                        forces, plan_.cut, r);
+      on_threads([&](const ThreadSplit& threads, std::size_t t) {
+        wall_forces_share(access_.contacts.walls, access_.discs, access_.walls, access_.law, access_.dt, WallSlip{},
+                          forces, threads, t);
+      });
       if (!dropped(Exchange::WholeSums)) send_sums(plan_.whole_sums);
       break;
     case Phase::Integration:
@@ -193,12 +195,41 @@ void RankStep::receive_sums(const Routes& routes) {
   }
 }
 
+// The rank's share of the cut, cut again between the threads a step of one process of its
+// size would use (step_threads), remade when the plan or the thread count changes.
+const ThreadSplit& RankStep::thread_cut() {
+  const int threads = step_threads(access_.discs.size());
+  if (threads_cut_.threads() != threads || threads_cut_build_ != plan_.build || threads_cut_ranks_ != plan_.ranks) {
+    threads_cut_ = split_share(plan_.cut, static_cast<std::size_t>(rank_), threads, access_.neighbors);
+    threads_cut_build_ = plan_.build;
+    threads_cut_ranks_ = plan_.ranks;
+  }
+  return threads_cut_;
+}
+
+void RankStep::on_threads(const std::function<void(const ThreadSplit&, std::size_t)>& work) {
+  const ThreadSplit& cut = thread_cut();
+  const int threads = cut.threads();
+  if (threads == 1) return work(cut, 0);
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  for (int t = 0; t < threads; ++t) work(cut, static_cast<std::size_t>(t));
+}
+
 void RankStep::integrate() {
   RankAccess& a = access_;
-  const Displacement moved = integrate_share(a.discs, a.clusters, a.forces.data(), a.body, a.dt, a.neighbors.x_ref.data(),
-                                             a.neighbors.y_ref.data(), plan_.cut, static_cast<std::size_t>(rank_));
-  max2_ = moved.max2;
-  not_finite_ = static_cast<double>(moved.not_finite);
+  double max2 = 0;
+  std::int64_t not_finite = 0;
+  const ThreadSplit& cut = thread_cut();
+#pragma omp parallel for num_threads(cut.threads()) schedule(static, 1) reduction(max : max2) reduction(+ : not_finite)
+  for (int t = 0; t < cut.threads(); ++t) {
+    const Displacement moved = integrate_share(a.discs, a.clusters, a.forces.data(), a.body, a.dt,
+                                               a.neighbors.x_ref.data(), a.neighbors.y_ref.data(), cut,
+                                               static_cast<std::size_t>(t));
+    max2 = std::max(max2, moved.max2);  // a max and a count: exact in any order
+    not_finite += moved.not_finite;
+  }
+  max2_ = max2;
+  not_finite_ = static_cast<double>(not_finite);
   buffer_ = {max2_, not_finite_};
   for (int q = 0; q < ranks_; ++q)
     if (q != rank_) transport_->send(q, buffer_);

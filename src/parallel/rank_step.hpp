@@ -12,6 +12,8 @@
 //   Walls        the wall forces of the disc range; whole sums to the integrating rank
 //   Integration  the free discs of the disc range and the bodies of the body range; the largest
 //                displacement to every rank; walls moved, the clock on
+// Each phase runs on the OpenMP threads one process of the rank's size would use, cutting the
+// rank's share again (split_share): the same bits for any thread count.
 // Not yet: bonds, named materials, hooks inside the step (std::invalid_argument).
 #include <array>
 #include <cstdint>
@@ -72,6 +74,9 @@ class RankStep {
   void receive_sums(const Routes& routes);
   void integrate();
   void take_displacements();
+  // The rank's share cut between its OpenMP threads, and a phase's work run on each of them.
+  const ThreadSplit& thread_cut();
+  void on_threads(const std::function<void(const ThreadSplit&, std::size_t)>& work);
 
   RankAccess access_;
   RankTransport* transport_;
@@ -82,6 +87,9 @@ class RankStep {
   bool build_ = false;  // this step rebuilds the list
   double max2_ = 0;
   double not_finite_ = 0;
+  ThreadSplit threads_cut_;
+  std::uint64_t threads_cut_build_ = 0;
+  int threads_cut_ranks_ = 0;
   std::vector<double> buffer_;
   std::array<bool, 4> dropped_{};
 };

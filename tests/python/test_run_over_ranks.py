@@ -1,7 +1,8 @@
 """Tests of one run spread over MPI ranks, `mpirun -n K orogen run` (issue 41,
 docs/domain-decomposition.md): the files of 1, 2 and 3 ranks are those of one process, bit for
 bit, for a short wedge with inflow and erosion, a wedge with surface laws, deposition and a
-flexing base, a singly-vergent wedge and a packing; a run stopped on 3 ranks resumes on 2; a rank killed with SIGKILL
+flexing base, a singly-vergent wedge and a packing, and on 2 ranks of 2 threads each; a run
+stopped on 3 ranks resumes on 2; a rank killed with SIGKILL
 takes the run down, and the run then resumes on another number of ranks, bitwise; what a run
 over ranks does not run yet is refused with exit 2.
 
@@ -19,7 +20,7 @@ import unittest
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BINARY = os.environ.get("OROGEN_BINARY", os.path.join(ROOT, "build", "release", "orogen"))
 MPIRUN = shutil.which("mpirun")
-QUIET = ["--set", "output.progress=never", "--set", "output.vtp=false", "--threads", "1"]
+QUIET = ["--set", "output.progress=never", "--set", "output.vtp=false"]
 SMALL_WEDGE = ["--set", "layer.thickness=5", "--set", "wedge.tile_length=1", "--set", "wedge.retro_length=4",
                "--set", "wedge.initial_active=4"]
 RUNS = {
@@ -65,12 +66,12 @@ def same_contents(a, b):
         return same(fa, fb)
 
 
-def orogen(args, ranks=None, **kw):
+def orogen(args, ranks=None, env_extra=None, **kw):
     """`orogen run ARGS`, as one process (ranks None) or under `mpirun -n ranks`."""
     command = [BINARY, "run"] + args
     if ranks is not None:
         command = [MPIRUN, "--allow-run-as-root", "--oversubscribe", "-n", str(ranks)] + command
-    env = dict(os.environ, OMP_NUM_THREADS="1")
+    env = dict(os.environ, OMP_NUM_THREADS="1", **(env_extra or {}))
     return subprocess.run(command, capture_output=True, text=True, env=env, timeout=600, **kw)
 
 
@@ -83,8 +84,8 @@ class RunOverRanks(unittest.TestCase):
     def out(self, name):
         return os.path.join(self.tmp, name)
 
-    def run_ok(self, args, ranks=None):
-        r = orogen(args + QUIET, ranks)
+    def run_ok(self, args, ranks=None, env_extra=None, threads=1):
+        r = orogen(args + QUIET + ["--threads", str(threads)], ranks, env_extra)
         self.assertEqual(r.returncode, 0, f"{args} on {ranks} ranks: {r.stdout}{r.stderr}")
         return r
 
@@ -112,11 +113,21 @@ class RunOverRanks(unittest.TestCase):
                         # Rank 0 alone writes, once: the log's lines are not repeated per rank.
                         self.assertEqual(r.stderr.count("finished at step"), 1, r.stderr)
 
+    def test_threads_inside_the_ranks_give_the_same_bits(self):
+        # Two ranks of two threads each, on the threads' paths even for this small wedge.
+        args = RUNS["wedge_erosion"]
+        self.run_ok(args + ["--out", self.out("one")])
+        out = self.out("two_by_two")
+        self.run_ok(args + ["--out", out], 2, {"OROGEN_MIN_PARALLEL_ITEMS": "16"}, threads=2)
+        self.assert_same_files(self.out("one"), out)
+        with open(os.path.join(out, "run.log")) as log:
+            self.assertIn("2 thread(s)", log.read())
+
     def test_a_run_stopped_on_three_ranks_resumes_on_two(self):
         args = RUNS["wedge_erosion"]
         self.run_ok(args + ["--out", self.out("one")])
         out = self.out("three_then_two")
-        r = orogen(args + QUIET + ["--out", out, "--abort-after-outputs", "2"], 3)
+        r = orogen(args + QUIET + ["--threads", "1", "--out", out, "--abort-after-outputs", "2"], 3)
         self.assertNotEqual(r.returncode, 0)
         self.assertTrue(os.path.exists(os.path.join(out, "checkpoint.bin")))
         self.assertFalse(os.path.exists(os.path.join(out, "summary.csv")))
@@ -128,8 +139,9 @@ class RunOverRanks(unittest.TestCase):
         self.run_ok(args + ["--out", self.out("one")])
         out = self.out("killed")
         env = dict(os.environ, OMP_NUM_THREADS="1")
-        job = subprocess.Popen([MPIRUN, "--allow-run-as-root", "--oversubscribe", "-n", "3", BINARY, "run"] + args +
-                               QUIET + ["--out", out], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env)
+        command = [MPIRUN, "--allow-run-as-root", "--oversubscribe", "-n", "3", BINARY, "run"] + args + QUIET
+        job = subprocess.Popen(command + ["--threads", "1", "--out", out], stdout=subprocess.PIPE,
+                               stderr=subprocess.STDOUT, env=env)
         series = os.path.join(out, "series.csv")
         deadline = time.time() + 300
         # Kill a rank that is not rank 0 once output 1 is written (the series has two rows).
@@ -153,7 +165,7 @@ class RunOverRanks(unittest.TestCase):
 
     def test_what_a_run_over_ranks_does_not_run_yet_is_refused(self):
         r = orogen(["--set", "wedge.basal=constant_velocity", "--set", "wedge.s_end=0.1"] + SMALL_WEDGE + QUIET +
-                   ["--out", self.out("refused")], 2)
+                   ["--threads", "1", "--out", self.out("refused")], 2)
         self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
         self.assertIn("cannot run over 2 MPI ranks", r.stderr)
         self.assertIn("hooks inside the step", r.stderr)
