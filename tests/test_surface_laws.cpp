@@ -214,5 +214,21 @@ TEST(SurfaceLaws, TheCarryRemovesWholeParticlesAtTheLawsRateAndLosesNoArea) {
   EXPECT_LT(carry.due[0], particle);
 }
 
+// A column owed two particles by one law pays them in two passes of one update, both named
+// after that law (the first payment used to clear the shares, and the second was named after
+// the first law in the list, the hillslope).
+TEST(SurfaceLaws, EveryParticleAColumnPaysIsNamedAfterTheLawThatLoweredIt) {
+  ErosionCarry carry;
+  const std::array<std::vector<double>, kSurfaceLaws> by_law = {std::vector<double>{0.0}, std::vector<double>{1.2},
+                                                                std::vector<double>{}};
+  accrue_change(carry, 0, {5.0}, {3.8}, 1.0, by_law);
+  for (int pass = 0; pass < 2; ++pass) {
+    const auto gone = pay_erosion(carry, {{0, 0.5, pass}});
+    ASSERT_EQ(gone.size(), 1u) << pass;
+    EXPECT_EQ(gone[0].law, SurfaceLaw::Fluvial) << pass;
+  }
+  EXPECT_NEAR(carry.due[0], 0.2, 1e-12);
+}
+
 }  // namespace
 }  // namespace orogen

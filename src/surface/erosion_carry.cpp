@@ -21,12 +21,16 @@ std::vector<DueRemoval> pay_erosion(ErosionCarry& carry, const std::vector<TopPa
   std::vector<DueRemoval> removed;
   for (const TopParticle& t : tops) {
     if (t.column >= carry.due.size() || t.id < 0 || carry.due[t.column] < t.area) continue;
+    const double owed = carry.due[t.column];
     carry.due[t.column] -= t.area;
     std::size_t law = 0;
     for (std::size_t l = 1; l < kSurfaceLaws; ++l)
       if (t.column < carry.by_law[l].size() && carry.by_law[l][t.column] > carry.by_law[law][t.column]) law = l;
+    // What is still owed keeps the laws' proportions: a column that pays several particles in
+    // one update (the removal passes) names each after the same law.
+    const double kept = carry.due[t.column] / owed;
     for (auto& share : carry.by_law)
-      if (t.column < share.size()) share[t.column] = 0;
+      if (t.column < share.size()) share[t.column] *= kept;
     removed.push_back({t.id, static_cast<SurfaceLaw>(law)});
   }
   return removed;

@@ -21,8 +21,8 @@ constexpr std::size_t kSurfaceLaws = 3;
 
 struct ErosionCarry {
   std::vector<double> due;  // per column, signed: eroded (> 0) or deposited (< 0) and not yet paid [d^2]
-  // Per law and column: the erosion each law accrued since the column last paid a particle, to
-  // name the law of the removal (the one that accrued most).
+  // Per law and column: the erosion each law accrued and the column has not paid yet (a payment
+  // takes from each law in proportion), to name the law of a removal (the one that accrued most).
   std::array<std::vector<double>, kSurfaceLaws> by_law;
 };
 
@@ -47,7 +47,7 @@ struct DueRemoval {
 
 // The particles to remove now, at most each column's top one: those whose column's due reaches
 // their area, each with the law that accrued most of its column's erosion; each removed
-// particle's area is taken from its column's due, and the column's shares start again.
+// particle's area is taken from its column's due, and from each law's share in proportion.
 std::vector<DueRemoval> pay_erosion(ErosionCarry& carry, const std::vector<TopParticle>& tops);
 
 }  // namespace orogen
