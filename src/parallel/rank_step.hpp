@@ -54,7 +54,6 @@ class RankStep {
   // Every rank's owned state into this copy (collective; nothing if it is whole already), so
   // that a stage between steps reads, and may change, the state of one process in each copy.
   void make_whole();
-  bool whole() const { return whole_; }
 
   const ExchangePlan& plan() const { return plan_; }
   World& world() { return access_.world; }
