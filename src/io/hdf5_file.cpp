@@ -123,9 +123,17 @@ const char* kind_name(Kind k) {
   }
 }
 
+// Creation properties without modification times, which HDF5 stores by default: the same run
+// then writes the same bytes, not only the same values.
+Object untimed(hid_t property_class) {
+  Object plist(check_id(H5Pcreate(property_class), "cannot create property list"), H5Pclose);
+  check(H5Pset_obj_track_times(plist.id(), false), "cannot switch off object times");
+  return plist;
+}
+
 // Chunked + shuffled + deflated storage when asked for and the filter is present.
 Object make_dcpl(std::span<const hsize_t> dims, WriteOptions opt) {
-  Object dcpl(check_id(H5Pcreate(H5P_DATASET_CREATE), "cannot create property list"), H5Pclose);
+  Object dcpl = untimed(H5P_DATASET_CREATE);
   const bool empty = std::any_of(dims.begin(), dims.end(), [](hsize_t d) { return d == 0; });
   if (opt.deflate > 0 && !empty && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
     // About 64 Ki elements per chunk: large enough to compress well, small for the cache.
@@ -287,7 +295,8 @@ File File::open(const std::filesystem::path& path, Mode mode) {
 void File::flush() { check(H5Fflush(id(), H5F_SCOPE_GLOBAL), "cannot flush file '" + path_.string() + "'"); }
 
 Group Group::create(hid_t loc, const std::string& name) {
-  return {check_id(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Object gcpl = untimed(H5P_GROUP_CREATE);
+  return {check_id(H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, gcpl.id(), H5P_DEFAULT),
                 "cannot create group " + quoted(name)),
           H5Gclose};
 }
@@ -377,7 +386,7 @@ void write_columns_view(hid_t loc, const std::string& name, const std::vector<st
   const std::array<hsize_t, 1> column_dims{n};
   Object space = make_space(dims);
   Object source = make_space(column_dims);
-  Object dcpl(check_id(H5Pcreate(H5P_DATASET_CREATE), "cannot create a dataset property list"), H5Pclose);
+  Object dcpl = untimed(H5P_DATASET_CREATE);
   for (std::size_t c = 0; c < columns.size(); ++c) {
     // Column c of the view: rows 0..n-1, one element wide, from the whole source dataset.
     const std::array<hsize_t, 2> start{0, c}, count{n, 1};
