@@ -1,6 +1,7 @@
 #include "parallel/rank_step.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <utility>
 
@@ -14,6 +15,19 @@ namespace {
 
 constexpr std::size_t kGhostValues = 5;  // x, y, vx, vy, omega: what the force phases read
 constexpr std::size_t kSumValues = 3;    // fx, fy, torque
+
+// Adds the seconds from its construction to its end to `total` (timing for the log only).
+class Stopwatch {
+ public:
+  explicit Stopwatch(double& total) : total_(total), start_(std::chrono::steady_clock::now()) {}
+  ~Stopwatch() { total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  Stopwatch(const Stopwatch&) = delete;
+  Stopwatch& operator=(const Stopwatch&) = delete;
+
+ private:
+  double& total_;
+  std::chrono::steady_clock::time_point start_;
+};
 
 }  // namespace
 
@@ -125,15 +139,23 @@ void RankStep::post_build() {
   check_steppable_over_ranks(access_.world);
   // Every copy decides alike: the largest displacement was reduced over the ranks.
   build_ = access_.world.contacts_stale();
-  if (build_ && !whole_) send_owned_state();
+  if (build_ && !whole_) {
+    Stopwatch watch(serial_.gather_seconds);
+    send_owned_state();
+  }
 }
 
 void RankStep::take_build() {
-  if (build_ && !whole_) receive_owned_states();
+  if (build_ && !whole_) {
+    Stopwatch watch(serial_.gather_seconds);
+    receive_owned_states();
+  }
   if (build_) {
     // The whole state in every copy: each builds the list of one process, sort included.
+    Stopwatch watch(serial_.build_seconds);
     access_.rebuild_if_stale();
     whole_ = true;
+    ++serial_.builds;
   }
   if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds) make_plan();
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
@@ -141,6 +163,7 @@ void RankStep::take_build() {
 
 void RankStep::make_whole() {
   if (whole_) return;
+  Stopwatch watch(serial_.gather_seconds);
   send_owned_state();
   receive_owned_states();
   whole_ = true;
@@ -151,6 +174,8 @@ void RankStep::send_owned_state() {
   pack_owned_state(access_, plan_, rank_, buffer_);
   for (int q = 0; q < ranks_; ++q)
     if (q != rank_) transport_->send(q, buffer_);
+  ++serial_.gathers;
+  serial_.gathered_values += buffer_.size() * static_cast<std::size_t>(ranks_ - 1);
 }
 
 void RankStep::receive_owned_states() {

@@ -55,6 +55,15 @@ class RankStep {
   // that a stage between steps reads, and may change, the state of one process in each copy.
   void make_whole();
 
+  // What a run over ranks costs beyond its slab's work, for the log: the gathers of every
+  // rank's state (before list builds and in make_whole), the doubles this rank sent in them,
+  // and the seconds it spent in them and in building the whole list.
+  struct SerialWork {
+    std::uint64_t gathers = 0, gathered_values = 0, builds = 0;
+    double gather_seconds = 0, build_seconds = 0;
+  };
+  const SerialWork& serial_work() const { return serial_; }
+
   const ExchangePlan& plan() const { return plan_; }
   World& world() { return access_.world; }
   RankAccess& access() { return access_; }
@@ -91,6 +100,7 @@ class RankStep {
   int threads_cut_ranks_ = 0;
   std::vector<double> buffer_;
   std::array<bool, 4> dropped_{};
+  SerialWork serial_;
 };
 
 }  // namespace orogen
