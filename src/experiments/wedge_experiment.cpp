@@ -103,7 +103,11 @@ void WedgeExperiment::build_layer(World& w) {
 void WedgeExperiment::attach(World& w) {
   find_base_walls(w);
   if (spec_.basal == BasalCondition::ConstantVelocity)
-    w.hooks().add(Stage::AfterForces, std::string(kPinHook), [this](World& world) { pin_retro_base(world); });
+    w.hooks().add_pin(std::string(kPinHook),
+                      StageHooks::Pin{[this]() -> const std::vector<std::size_t>& { return retro_walls_; },
+                                      [this](const World& world) { size_pins(world); },
+                                      [this](const World& world, std::size_t i) { pin(world, i); },
+                                      [this](const World& world, std::size_t i) { return pinned(world, i); }});
 }
 
 // Keeps kinematic slab beyond the pro window: stamps a new tile when less than
@@ -192,18 +196,19 @@ void WedgeExperiment::update_windows(World& w) {
 }
 
 // Constant-velocity condition: a disc that touches the retro-side base is held at rest (no
-// slip) from the step it first touches: a hook after the forces of every step, so it does not
-// move in that step's integration (docs/model.md, "Constant velocity").
-void WedgeExperiment::pin_retro_base(World& w) {
+// slip) from the step it first touches: a pin hook after the forces of every step
+// (StageHooks::Pin), so it does not move in that step's integration (docs/model.md, "Constant
+// velocity"). The experiment keeps a flag for every disc id so far, set once a disc touched.
+void WedgeExperiment::size_pins(const World& w) {
   const auto ids = static_cast<std::size_t>(w.next_disc_id());
   if (pinned_.size() < ids) pinned_.resize(ids, 0);
-  w.edit_motion([&](MotionEdit& e) {
-    for (const std::size_t retro : retro_walls_)
-      w.for_each_touching(retro, [&](std::size_t i) {
-        pinned_[static_cast<std::size_t>(w.discs().id[i])] = 1;
-        e.body_of(i, Motion::Kinematic);
-      });
-  });
+}
+
+void WedgeExperiment::pin(const World& w, std::size_t disc) { pinned_[static_cast<std::size_t>(w.discs().id[disc])] = 1; }
+
+bool WedgeExperiment::pinned(const World& w, std::size_t disc) const {
+  const auto id = static_cast<std::size_t>(w.discs().id[disc]);
+  return id < pinned_.size() && pinned_[id] != 0;
 }
 
 // Erosion (thesis 6.3): every disc, or whole cluster by its mean elevation, above the

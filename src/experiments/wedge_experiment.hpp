@@ -96,7 +96,10 @@ class WedgeExperiment final : public Experiment {
   void build_layer(World& world);
   void feed_slab(World& world);
   void update_windows(World& world);
-  void pin_retro_base(World& world);
+  // The constant-velocity base's pin (StageHooks::Pin): sized, set and read by disc index.
+  void size_pins(const World& world);
+  void pin(const World& world, std::size_t disc);
+  bool pinned(const World& world, std::size_t disc) const;
   void erode(World& world);
   // (Re)makes the deflecting base from the spec and the tile (setup and load); the indices of the
   // walls of each base (attach).
@@ -168,7 +171,7 @@ class WedgeExperiment final : public Experiment {
   double window_retro_ = 0;  // discs right of this are kinematic at rest (the end wall: none)
   double x_end_ = 0;         // right end wall of the retro-side layer
   std::int64_t entered_ = 0; // discs ever added to the model
-  std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base (pin_retro_base)
+  std::vector<std::uint8_t> pinned_;  // by disc id: held at rest on the retro base (pin)
   DisplacementTracker displacements_;  // for the per-output displacement fields
   WedgeHistory history_;               // the shape at each output, for summary.csv
   SurfaceProcesses surface_;           // the surface laws and the area ledger

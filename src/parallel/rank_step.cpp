@@ -35,8 +35,9 @@ void check_steppable_over_ranks(const World& world) {
   const char* missing = nullptr;
   if (!world.bonds().id_a.empty()) missing = "bonds";
   else if (world.discs().has_materials) missing = "named materials (per-disc friction and slip)";
-  else if (!world.hooks().empty(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration))
-    missing = "hooks inside the step";
+  else if (!world.hooks().only_pins(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration) ||
+           world.hooks().pins().size() > 1)
+    missing = "hooks inside the step (other than one pin: the constant-velocity base's)";
   if (missing)
     throw std::invalid_argument(std::string("a step over ranks does not run ") + missing +
                                 " yet (docs/domain-decomposition.md)");
@@ -93,6 +94,7 @@ void RankStep::post(Phase phase) {
                           forces, threads, t);
       });
       if (!dropped(Exchange::WholeSums)) send_sums(plan_.whole_sums);
+      if (has_pins()) find_pins();
       break;
     case Phase::Integration:
       integrate();
@@ -128,6 +130,7 @@ void RankStep::take(Phase phase) {
       break;
     case Phase::Walls:
       if (!dropped(Exchange::WholeSums)) receive_sums(plan_.whole_sums);
+      if (has_pins()) take_pin_flags();
       break;
     case Phase::Integration:
       take_displacements();
@@ -240,6 +243,66 @@ void RankStep::on_threads(const std::function<void(const ThreadSplit&, std::size
   for (int t = 0; t < threads; ++t) work(cut, static_cast<std::size_t>(t));
 }
 
+void RankStep::find_pins() {
+  World& w = access_.world;
+  const Discs& d = access_.discs;
+  const Clusters& c = access_.clusters;
+  pins_found_.clear();
+  pins_held_.clear();
+  auto at_rest = [&](std::size_t i) {
+    const auto kinematic = static_cast<std::uint8_t>(Motion::Kinematic);
+    if (d.cluster[i] < 0) return d.motion[i] == kinematic && d.vx[i] == 0 && d.vy[i] == 0;
+    const auto k = static_cast<std::size_t>(d.cluster[i]);
+    return c.motion[k] == kinematic && c.vx[k] == 0 && c.vy[k] == 0;
+  };
+  for (const StageHooks::Pin* pin : w.hooks().pins()) {
+    pin->prepare(w);
+    for (const std::size_t wall : pin->walls())
+      w.for_each_touching(wall, [&](std::size_t i) {
+        // This rank's wall contacts are this step's; a disc held and recorded already is done.
+        if (plan_.wall_rank[i] == rank_ && !(pin->recorded(w, i) && at_rest(i)))
+          pins_found_.push_back(static_cast<std::uint32_t>(i));
+      });
+  }
+  std::sort(pins_found_.begin(), pins_found_.end());
+  pins_found_.erase(std::unique(pins_found_.begin(), pins_found_.end()), pins_found_.end());
+  // A flag for each disc of the whole sums sent to its integrating rank: hold its body.
+  for (int q = 0; q < ranks_; ++q) {
+    const auto& discs = plan_.whole_sums(rank_, q);
+    if (q == rank_ || discs.empty()) continue;
+    buffer_.assign(discs.size(), 0.0);
+    for (std::size_t k = 0; k < discs.size(); ++k)
+      if (std::binary_search(pins_found_.begin(), pins_found_.end(), discs[k])) buffer_[k] = 1;
+    transport_->send(q, buffer_);
+  }
+  for (const auto i : pins_found_)
+    if (plan_.step_rank[i] == rank_) pins_held_.push_back(i);
+}
+
+void RankStep::take_pin_flags() {
+  for (int q = 0; q < ranks_; ++q) {
+    const auto& discs = plan_.whole_sums(q, rank_);
+    if (q == rank_ || discs.empty()) continue;
+    buffer_.resize(discs.size());
+    transport_->receive(q, buffer_);
+    for (std::size_t k = 0; k < discs.size(); ++k)
+      if (buffer_[k] != 0) pins_held_.push_back(discs[k]);
+  }
+  hold(pins_held_, false);  // before integration, as the hook of one process
+}
+
+void RankStep::hold(const std::vector<std::uint32_t>& discs, bool record) {
+  if (discs.empty()) return;
+  World& w = access_.world;
+  const auto pins = w.hooks().pins();
+  w.edit_motion([&](MotionEdit& e) {
+    for (const auto i : discs) {
+      if (record) pins.front()->record(w, i);  // one pin at most (check_steppable_over_ranks)
+      e.body_of(i, Motion::Kinematic);
+    }
+  });
+}
+
 void RankStep::integrate() {
   RankAccess& a = access_;
   double max2 = 0;
@@ -256,18 +319,34 @@ void RankStep::integrate() {
   max2_ = max2;
   not_finite_ = static_cast<double>(not_finite);
   buffer_ = {max2_, not_finite_};
+  if (has_pins()) buffer_.push_back(static_cast<double>(pins_found_.size()));
   for (int q = 0; q < ranks_; ++q)
     if (q != rank_) transport_->send(q, buffer_);
+  if (!pins_found_.empty()) {
+    buffer_.assign(pins_found_.begin(), pins_found_.end());
+    for (int q = 0; q < ranks_; ++q)
+      if (q != rank_) transport_->send(q, buffer_);
+  }
 }
 
 void RankStep::take_displacements() {
-  buffer_.resize(2);
+  const bool pins = has_pins();
+  std::vector<std::uint32_t> pinned = pins_found_;  // every rank's, this one's first
   for (int q = 0; q < ranks_; ++q) {
     if (q == rank_) continue;
+    buffer_.resize(pins ? 3 : 2);
     transport_->receive(q, buffer_);
     max2_ = std::max(max2_, buffer_[0]);  // a max is exact in any order
     not_finite_ += buffer_[1];
+    if (pins && buffer_[2] > 0) {
+      buffer_.resize(static_cast<std::size_t>(buffer_[2]));
+      transport_->receive(q, buffer_);
+      for (const double i : buffer_) pinned.push_back(static_cast<std::uint32_t>(i));
+    }
   }
+  // Every copy holds and records what any rank pinned (the integrating rank held its own bodies
+  // before it moved them), so that all copies keep the same motion flags and the same record.
+  if (pins) hold(pinned, true);
   access_.moved = Displacement{max2_, static_cast<std::int64_t>(not_finite_)}.distance();
   // Integration zeroed the sums it used; those this rank summed for others stay: clear them,
   // as one process holds only zeros between steps.

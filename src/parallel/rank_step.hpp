@@ -9,12 +9,14 @@
 //   Ghosts       the motion of the discs this rank reads but another moved
 //   EvenPairs    the even chunks; their running sums to the odd chunk's rank
 //   OddPairs     the odd chunks; whole pair sums to the wall owner of a disc on a wall
-//   Walls        the wall forces of the disc range; whole sums to the integrating rank
+//   Walls        the wall forces of the disc range; whole sums to the integrating rank; with a
+//                pin hook (StageHooks::Pin), the bodies its discs pin, flagged to their
+//                integrating rank, which holds them before it integrates
 //   Integration  the free discs of the disc range and the bodies of the body range; the largest
-//                displacement to every rank; walls moved, the clock on
+//                displacement (and the discs pinned) to every rank; walls moved, the clock on
 // Each phase runs on the OpenMP threads one process of the rank's size would use, cutting the
 // rank's share again (split_share): the same bits for any thread count.
-// Not yet: bonds, named materials, hooks inside the step (std::invalid_argument).
+// Not yet: bonds, named materials, hooks inside the step other than pins (std::invalid_argument).
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -82,6 +84,13 @@ class RankStep {
   void receive_sums(const Routes& routes);
   void integrate();
   void take_displacements();
+  // Pin hooks: the discs of this rank's disc range that touch a pin's walls and are not yet
+  // held, flagged to the ranks that integrate them; the flags received; all of them applied in
+  // every copy after integration.
+  bool has_pins() const { return !access_.world.hooks().pins().empty(); }
+  void find_pins();
+  void take_pin_flags();
+  void hold(const std::vector<std::uint32_t>& discs, bool record);
   // The rank's share cut between its OpenMP threads, and a phase's work run on each of them.
   const ThreadSplit& thread_cut();
   void on_threads(const std::function<void(const ThreadSplit&, std::size_t)>& work);
@@ -99,6 +108,7 @@ class RankStep {
   std::uint64_t threads_cut_build_ = 0;
   int threads_cut_ranks_ = 0;
   std::vector<double> buffer_;
+  std::vector<std::uint32_t> pins_found_, pins_held_;  // this step's, as wall owner and as integrator
   std::array<bool, 4> dropped_{};
   SerialWork serial_;
 };

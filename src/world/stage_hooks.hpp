@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,10 +48,28 @@ class StageHooks {
   std::vector<std::string> names(Stage stage) const;
   void run(Stage stage, World& world) const;
 
+  // A hook of one kind, which a step over ranks can run where the discs are (parallel/rank_step):
+  // after the forces, `prepare(world)` is called, then every body with a disc touching one of
+  // `walls()` is held at rest (kinematic, zero velocity) and `record(world, disc)` is called for
+  // each such disc. `recorded(world, disc)` says whether it was (a rank then skips a disc that is
+  // recorded and at rest already).
+  struct Pin {
+    std::function<const std::vector<std::size_t>&()> walls;
+    std::function<void(const World&)> prepare;
+    std::function<void(const World&, std::size_t disc)> record;
+    std::function<bool(const World&, std::size_t disc)> recorded;
+  };
+  void add_pin(std::string name, Pin pin);  // at Stage::AfterForces, as add()
+  std::vector<const Pin*> pins() const;     // in the order they run
+  bool only_pins(Stage stage) const;        // every hook of `stage` is a pin (or there is none)
+  // What the pin hook does in one process: records and holds every body touching its walls.
+  static void run_pin(const Pin& pin, World& world);
+
  private:
   struct Named {
     std::string name;
     Hook hook;
+    std::shared_ptr<const Pin> pin;  // set for a pin
   };
   static std::size_t index(Stage s) { return static_cast<std::size_t>(s); }
   std::array<std::vector<Named>, kStageCount> lists_;

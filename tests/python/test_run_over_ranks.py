@@ -1,7 +1,7 @@
 """Tests of one run spread over MPI ranks, `mpirun -n K orogen run` (issue 41,
 docs/domain-decomposition.md): the files of 1, 2 and 3 ranks are those of one process, bit for
 bit, for a short wedge with inflow and erosion, a wedge with surface laws, deposition and a
-flexing base, a singly-vergent wedge and a packing, and on 2 ranks of 2 threads each; a run
+flexing base, a wedge on the constant-velocity base, a singly-vergent wedge and a packing, and on 2 ranks of 2 threads each; a run
 stopped on 3 ranks resumes on 2; a rank killed with SIGKILL
 takes the run down, and the run then resumes on another number of ranks, bitwise; what a run
 over ranks does not run yet is refused with exit 2.
@@ -31,6 +31,9 @@ RUNS = {
     "wedge_surface_flexure": [os.path.join(ROOT, "examples", "sedimentation_flexure.toml")] + SMALL_WEDGE + [
         "--set", "wedge.s_end=0.6", "--set", "wedge.outputs=2", "--set", "surface.diffusivity=0.5",
         "--set", "isostasy.every=100", "--set", "surface.every=200"],
+    # The constant-velocity base: bodies that touch the retro base are pinned inside the step.
+    "wedge_constant_velocity": SMALL_WEDGE + ["--set", "wedge.basal=constant_velocity", "--set", "wedge.s_end=0.6",
+                                              "--set", "wedge.outputs=2"],
     "singly_vergent": ["--set", "run.experiment=singly_vergent", "--set", "particles.packing=random_discs",
                        "--set", "layer.length=60", "--set", "layer.thickness=6", "--set", "contact.kn=2000",
                        "--set", "singly.speed=0.05", "--set", "singly.shortening=1", "--set", "singly.outputs=5"],
@@ -145,11 +148,12 @@ class RunOverRanks(unittest.TestCase):
         self.assert_same_files(self.out("one"), out)
 
     def test_what_a_run_over_ranks_does_not_run_yet_is_refused(self):
-        r = orogen(["--set", "wedge.basal=constant_velocity", "--set", "wedge.s_end=0.1"] + SMALL_WEDGE + QUIET +
-                   ["--threads", "1", "--out", self.out("refused")], 2)
+        # A layered crust: named materials and bonds.
+        layered = os.path.join(ROOT, "examples", "wedge_layered.toml")
+        r = orogen([layered, "--set", "wedge.s_end=0.1"] + QUIET + ["--threads", "1", "--out", self.out("refused")], 2)
         self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
         self.assertIn("cannot run over 2 MPI ranks", r.stderr)
-        self.assertIn("hooks inside the step", r.stderr)
+        self.assertIn("bonds", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.out("refused"), "config.toml")))
 
 
