@@ -14,6 +14,7 @@ quiet="--set output.progress=never --set output.vtp=false --threads 2"
 declare -A runs=(
   [wedge_default]="--set wedge.s_end=0.5 --set wedge.outputs=5"
   [wedge_erosion]="--set layer.thickness=5 --set wedge.tile_length=4 --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.s_end=0.6 --set wedge.outputs=4 --set wedge.erosion_height=0.9"
+  [wedge_constant_velocity]="--set wedge.basal=constant_velocity --set layer.thickness=6 --set wedge.s_end=0.5 --set wedge.outputs=4"
   [wedge_inflow]="--set layer.thickness=5 --set wedge.tile_length=1 --set wedge.retro_length=4 --set wedge.initial_active=4 --set wedge.s_end=2.5 --set wedge.outputs=5"
   [packing]="--set run.experiment=packing --set particles.packing=random_clusters --set layer.length=40 --set layer.thickness=8"
   [repose_slump]="--set run.experiment=repose --set particles.packing=random_clusters --set repose.size=16 --set repose.min_time=5 --set repose.max_time=15"

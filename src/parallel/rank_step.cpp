@@ -245,16 +245,9 @@ void RankStep::on_threads(const std::function<void(const ThreadSplit&, std::size
 
 void RankStep::find_pins() {
   World& w = access_.world;
-  const Discs& d = access_.discs;
-  const Clusters& c = access_.clusters;
   pins_found_.clear();
   pins_held_.clear();
-  auto at_rest = [&](std::size_t i) {
-    const auto kinematic = static_cast<std::uint8_t>(Motion::Kinematic);
-    if (d.cluster[i] < 0) return d.motion[i] == kinematic && d.vx[i] == 0 && d.vy[i] == 0;
-    const auto k = static_cast<std::size_t>(d.cluster[i]);
-    return c.motion[k] == kinematic && c.vx[k] == 0 && c.vy[k] == 0;
-  };
+  auto at_rest = [&](std::size_t i) { return MotionEdit::body_has(access_.discs, access_.clusters, i, Motion::Kinematic); };
   for (const StageHooks::Pin* pin : w.hooks().pins()) {
     pin->prepare(w);
     for (const std::size_t wall : pin->walls())
@@ -331,7 +324,7 @@ void RankStep::integrate() {
 
 void RankStep::take_displacements() {
   const bool pins = has_pins();
-  std::vector<std::uint32_t> pinned = pins_found_;  // every rank's, this one's first
+  if (pins) pins_all_ = pins_found_;  // every rank's, this one's first
   for (int q = 0; q < ranks_; ++q) {
     if (q == rank_) continue;
     buffer_.resize(pins ? 3 : 2);
@@ -341,12 +334,12 @@ void RankStep::take_displacements() {
     if (pins && buffer_[2] > 0) {
       buffer_.resize(static_cast<std::size_t>(buffer_[2]));
       transport_->receive(q, buffer_);
-      for (const double i : buffer_) pinned.push_back(static_cast<std::uint32_t>(i));
+      for (const double i : buffer_) pins_all_.push_back(static_cast<std::uint32_t>(i));
     }
   }
   // Every copy holds and records what any rank pinned (the integrating rank held its own bodies
   // before it moved them), so that all copies keep the same motion flags and the same record.
-  if (pins) hold(pinned, true);
+  if (pins) hold(pins_all_, true);
   access_.moved = Displacement{max2_, static_cast<std::int64_t>(not_finite_)}.distance();
   // Integration zeroed the sums it used; those this rank summed for others stay: clear them,
   // as one process holds only zeros between steps.

@@ -87,7 +87,7 @@ class RankStep {
   // Pin hooks: the discs of this rank's disc range that touch a pin's walls and are not yet
   // held, flagged to the ranks that integrate them; the flags received; all of them applied in
   // every copy after integration.
-  bool has_pins() const { return !access_.world.hooks().pins().empty(); }
+  bool has_pins() const { return access_.world.hooks().has_pins(); }
   void find_pins();
   void take_pin_flags();
   void hold(const std::vector<std::uint32_t>& discs, bool record);
@@ -108,7 +108,8 @@ class RankStep {
   std::uint64_t threads_cut_build_ = 0;
   int threads_cut_ranks_ = 0;
   std::vector<double> buffer_;
-  std::vector<std::uint32_t> pins_found_, pins_held_;  // this step's, as wall owner and as integrator
+  // This step's pinned discs: found as wall owner, held as integrator, and those of every rank.
+  std::vector<std::uint32_t> pins_found_, pins_held_, pins_all_;
   std::array<bool, 4> dropped_{};
   SerialWork serial_;
 };

@@ -39,6 +39,13 @@ bool MotionEdit::cluster(std::size_t k, Motion m, double vx, double vy) {
   return true;
 }
 
+bool MotionEdit::body_has(const Discs& d, const Clusters& c, std::size_t i, Motion m, double vx, double vy) {
+  const auto k = d.cluster[i];
+  if (k < 0) return !differs(d.motion[i], d.vx[i], d.vy[i], m, vx, vy);
+  const auto b = static_cast<std::size_t>(k);
+  return !differs(c.motion[b], c.vx[b], c.vy[b], m, vx, vy);
+}
+
 bool MotionEdit::body_of(std::size_t i, Motion m, double vx, double vy) {
   const auto k = d_.cluster[i];
   return k >= 0 ? cluster(static_cast<std::size_t>(k), m, vx, vy) : disc(i, m, vx, vy);

@@ -23,6 +23,9 @@ class MotionEdit {
   bool cluster(std::size_t k, Motion m, double vx = 0, double vy = 0);
   // Disc i if it is free, else its whole cluster.
   bool body_of(std::size_t i, Motion m, double vx = 0, double vy = 0);
+  // Whether body_of(i, m, vx, vy) would change nothing (it reads, never edits).
+  static bool body_has(const Discs& discs, const Clusters& clusters, std::size_t i, Motion m, double vx = 0,
+                       double vy = 0);
 
   // Whether anything changed; whether a body turned dynamic or kinematic (not only a
   // kinematic velocity), which changes the wall contacts' list.

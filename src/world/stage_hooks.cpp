@@ -38,6 +38,11 @@ std::vector<const StageHooks::Pin*> StageHooks::pins() const {
   return out;
 }
 
+bool StageHooks::has_pins() const {
+  const auto& list = lists_[index(Stage::AfterForces)];
+  return std::any_of(list.begin(), list.end(), [](const Named& h) { return h.pin != nullptr; });
+}
+
 bool StageHooks::only_pins(Stage stage) const {
   return std::all_of(lists_[index(stage)].begin(), lists_[index(stage)].end(), [](const Named& h) { return h.pin != nullptr; });
 }

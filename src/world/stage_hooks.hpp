@@ -61,6 +61,7 @@ class StageHooks {
   };
   void add_pin(std::string name, Pin pin);  // at Stage::AfterForces, as add()
   std::vector<const Pin*> pins() const;     // in the order they run
+  bool has_pins() const;
   bool only_pins(Stage stage) const;        // every hook of `stage` is a pin (or there is none)
   // What the pin hook does in one process: records and holds every body touching its walls.
   static void run_pin(const Pin& pin, World& world);
