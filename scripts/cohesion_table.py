@@ -4,7 +4,8 @@ strength (and seeds), the wedge at its end (height, tapers), its faults over the
 the run (orogen.analysis.faults: run it first in each run), and its bonds. Doubly-vergent wedges
 (S, H, alpha_fit, beta_fit, Dp) and singly-vergent ones (shortening, height, taper, width: in the
 columns of H, alpha, Dp; no retro taper) alike; the strength and the seed are read from each
-run's config.toml (the first material's bond_tensile_strength).
+run's config.toml (the first material's bond_tensile_strength). The late pro forethrusts' slip
+over the picker's window and whole offset are their medians.
 
     python3 -m orogen.analysis.faults RUN            (each run of the sweep)
     scripts/cohesion_table.py runs/cohesion          (a Markdown table on standard output)
@@ -51,6 +52,11 @@ def row(run):
     back = [f for f in late_faults if f["kind"] == "backthrust"]
     spacing = [float(f["spacing"]) for f in fore if f["spacing"] not in ("", "nan")]
     spacing = [v for v in spacing if math.isfinite(v)]
+
+    def median_of(key):  # the late pro forethrusts' median (old faults.csv files lack the column)
+        v = np.array([float(f[key]) for f in fore if f.get(key, "") not in ("", None)], float)
+        v = v[np.isfinite(v)]
+        return float(np.median(v)) if len(v) else math.nan
     breaks = intact = 0
     path = os.path.join(run, "bond_breaks.csv")
     if os.path.isfile(path):
@@ -66,27 +72,30 @@ def row(run):
             "fore": len(fore) / n_out, "back": len(back) / n_out,
             "fore_dip": float(np.mean([float(f["dip_deg"]) for f in fore])) if fore else math.nan,
             "back_dip": float(np.mean([float(f["dip_deg"]) for f in back])) if back else math.nan,
-            "spacing": float(np.median(spacing)) if spacing else math.nan, "breaks": breaks, "intact": intact}
+            "spacing": float(np.median(spacing)) if spacing else math.nan, "slip": median_of("slip"),
+            "offset": median_of("offset"), "breaks": breaks, "intact": intact}
 
 
 def main(sweep):
-    runs = sorted((os.path.dirname(p) for p in glob.glob(os.path.join(sweep, "runs", "*", "series.csv"))),
-                  key=strength_and_seed)
+    runs = sorted((os.path.dirname(p) for p in glob.glob(os.path.join(sweep, "runs", "*", "faults.csv"))),
+                  key=strength_and_seed)  # the runs whose faults were picked (those still running are left out)
     print("| bond strength [rho g d] | seed | H [h0] | pro taper alpha_fit [deg] | retro taper beta_fit [deg] "
           "| Dp or width [h0] | pro forethrusts per output | pro backthrusts per output | forethrust dip [deg] "
-          "| backthrust dip [deg] | forethrust spacing [h0] | bonds broken / made |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "| backthrust dip [deg] | forethrust spacing [h0] | forethrust slip over the window [h0] "
+          "| forethrust offset [h0] | bonds broken / made |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     rows = [row(run) for run in runs]
     for r in rows:
         made = r["breaks"] + r["intact"]
-        print("| %g | %d | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.0f | %.0f | %.2f | %s |" % (
+        print("| %g | %d | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.0f | %.0f | %.2f | %.3f | %.2f | %s |" % (
             r["strength"], r["seed"], r["H"], r["alpha"], r["beta"], r["Dp"], r["fore"], r["back"], r["fore_dip"],
-            r["back_dip"], r["spacing"], "%d / %d" % (r["breaks"], made) if made else "no bonds"))
+            r["back_dip"], r["spacing"], r["slip"], r["offset"], "%d / %d" % (r["breaks"], made) if made else "no bonds"))
     strengths = sorted({r["strength"] for r in rows})
     if len(rows) > len(strengths):  # seeds: each strength's mean and the spread between seeds
         print("\n| bond strength [rho g d] | seeds | H [h0] | taper [deg] | forethrusts per output "
-              "| forethrust dip [deg] | forethrust spacing [h0] |")
-        print("|---|---|---|---|---|---|---|")
+              "| forethrust dip [deg] | forethrust spacing [h0] | forethrust slip over the window [h0] "
+              "| forethrust offset [h0] |")
+        print("|---|---|---|---|---|---|---|---|---|")
         for strength in strengths:
             group = [r for r in rows if r["strength"] == strength]
 
@@ -94,9 +103,9 @@ def main(sweep):
                 v = np.array([r[key] for r in group], float)
                 v = v[np.isfinite(v)]
                 return (fmt + " +- " + fmt) % (v.mean(), v.std(ddof=1) if len(v) > 1 else 0.0) if len(v) else "-"
-            print("| %g | %d | %s | %s | %s | %s | %s |" % (
+            print("| %g | %d | %s | %s | %s | %s | %s | %s | %s |" % (
                 strength, len(group), both("H", "%.2f"), both("alpha", "%.1f"), both("fore", "%.1f"),
-                both("fore_dip", "%.0f"), both("spacing", "%.2f")))
+                both("fore_dip", "%.0f"), both("spacing", "%.2f"), both("slip", "%.3f"), both("offset", "%.2f")))
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 """Tests of orogen.analysis.faults (docs/materials.md, Fault picking): on a synthetic strain
 field with a forethrust and a backthrust of known dips in a weak background, the picker finds
 those two, of the right kind, dip and place along the base, and nothing else; spacing along the
-base; bad input named.
+base; a rigid thrust's slip and offset; bad input named.
 
 Run from the repository root:  /usr/bin/python3 -m unittest tests/python/test_faults.py
 """
@@ -90,6 +90,78 @@ class Picker(unittest.TestCase):
         walls = np.array([[-8.0, 0.0, 8.0, 0.0], [-7.0, 0.0, -7.0, 3.0], [5.2, 0.0, 5.2, 3.0]])
         (singly,) = faults.pick_faults(x, y, strain, d_h0=0.1, seed=1, core_x=faults.backstop_x(walls))
         self.assertEqual((singly["side"], singly["kind"]), ("pro", "forethrust"))
+
+
+def thrust(x, y, x_base, dip_deg, deepens_to_plus_x, slip):
+    """The lattice after a rigid thrust: the discs above the line through (x_base, 0) at the dip
+    moved `slip` up-dip along it. Returns the new x, y and the line's up-dip unit vector."""
+    sign = -1 if deepens_to_plus_x else 1  # slope of the line
+    slope = sign * math.tan(math.radians(dip_deg))
+    up = np.array([sign * math.cos(math.radians(dip_deg)), math.sin(math.radians(dip_deg))])
+    above = y > slope * (x - x_base)
+    return x + above * slip * up[0], y + above * slip * up[1], up
+
+
+class Offsets(unittest.TestCase):
+    """A rigid thrust of known slip through a layered lattice: the slip over the window from the
+    walls' displacements, the offset from the horizons (initial depth), both in the thrust sense."""
+
+    def setUp(self):
+        self.x, self.y = wedge_lattice()
+        self.depth0 = 1.6 - self.y  # horizons: flat bands of initial depth
+        self.ids = np.arange(self.x.size)
+
+    def check(self, x_base, dip, deepens_to_plus_x, amount):
+        x1, y1, _ = thrust(self.x, self.y, x_base, dip, deepens_to_plus_x, amount)
+        strain = band_strain(x1, y1, x_base, dip, deepens_to_plus_x, 1.3)
+        (f,) = faults.pick_faults(x1, y1, strain, d_h0=0.1, seed=1)
+        before = {"x": self.x, "y": self.y, "id": self.ids}
+        after = {"x": x1, "y": y1, "id": self.ids}
+        wall = faults.walls(f, x1, y1, 0.1, strain, f["level"])
+        return f, faults.slip(wall, before, after), faults.offset(wall, self.depth0, 0.1)
+
+    def test_a_forethrust_of_known_slip(self):
+        f, slip, offset = self.check(-2.0, 30, True, 0.4)
+        self.assertEqual(f["kind"], "forethrust")
+        self.assertAlmostEqual(slip, 0.4, delta=0.02)  # rigid walls: their medians move exactly
+        self.assertAlmostEqual(offset, 0.4, delta=0.05)  # horizons in bands of one disc
+
+    def test_a_backthrust_and_its_sense(self):
+        f, slip, offset = self.check(-1.0, 55, False, 0.3)
+        self.assertEqual(f["kind"], "backthrust")
+        self.assertAlmostEqual(slip, 0.3, delta=0.02)
+        self.assertAlmostEqual(offset, 0.3, delta=0.05)
+        _, slip, offset = self.check(-1.0, 55, False, -0.3)  # the hanging wall down: a normal fault's sense
+        self.assertAlmostEqual(slip, -0.3, delta=0.02)
+        self.assertAlmostEqual(offset, -0.3, delta=0.05)
+
+    def test_the_walls_stand_beyond_a_wide_sheared_zone(self):
+        # The thrust's 0.4 h0 taken up across a zone: the hanging wall's share of it rises as
+        # tanh(distance / 0.25 h0), and the strain is its gradient, sheared (a quarter of the
+        # peak) within 3.3 discs of the line. Walls right beside the picked band see part of the
+        # slip; walls beyond the zone, as the strain field shows it, nearly all of it.
+        slope = -math.tan(math.radians(30))
+        up = np.array([-math.cos(math.radians(30)), math.sin(math.radians(30))])
+        across = (self.y - slope * (self.x + 2.0)) * math.cos(math.radians(30))  # distance above the line
+        share = 0.5 * (1 + np.tanh(across / 0.25))
+        x1, y1 = self.x + 0.4 * share * up[0], self.y + 0.4 * share * up[1]
+        strain = np.cosh(across / 0.25) ** -2
+        f = faults.pick_faults(x1, y1, strain, d_h0=0.1, seed=1)[0]
+        self.assertAlmostEqual(f["dip_deg"], 30, delta=5)  # a line inside a wide zone may lean
+        before, after = {"x": self.x, "y": self.y, "id": self.ids}, {"x": x1, "y": y1, "id": self.ids}
+        self.assertLess(faults.slip(faults.walls(f, x1, y1, 0.1), before, after), 0.34)
+        wall = faults.walls(f, x1, y1, 0.1, strain, f["level"])
+        self.assertAlmostEqual(faults.slip(wall, before, after), 0.4, delta=0.03)
+        # The horizons are read along the picked line, which leans 4 degrees off the zone: 0.345.
+        self.assertAlmostEqual(faults.offset(wall, self.depth0, 0.1), 0.4, delta=0.07)
+
+    def test_an_offset_longer_than_the_fault_is_not_guessed(self):
+        # Walls that share no horizon (the hanging wall's all deeper): the picker does not guess.
+        x1, y1, _ = thrust(self.x, self.y, -2.0, 30, True, 0.4)
+        (f,) = faults.pick_faults(x1, y1, band_strain(x1, y1, -2.0, 30, True, 1.3), d_h0=0.1, seed=1)
+        moved = (x1 != self.x) | (y1 != self.y)
+        wall = faults.walls(f, x1, y1, 0.1)
+        self.assertTrue(math.isnan(faults.offset(wall, np.where(moved, self.depth0 + 5, self.depth0), 0.1)))
 
 
 class Command(unittest.TestCase):

@@ -25,6 +25,16 @@ increment. Lines flatter than MIN_DIP_DEG (bedding-parallel shear) are not repor
 discs within WEDGE_MARGIN of the wedge (where the surface stands WEDGE_RISE above the layer)
 are looked at. The spacing of a fault is the distance along the base (where its line meets y = 0)
 to the next fault of its side and kind towards the foreland (NaN for the outermost).
+
+How far a fault has moved, from its walls: the discs just beyond its sheared zone (WALL_D thick,
+along the picked segment), the hanging wall above it and the footwall below.
+Its slip over the window is how much further up-dip the hanging wall's discs moved than the
+footwall's (medians; positive in the sense of a thrust). Its offset, the whole slip it has
+carried, is read as a geologist reads it on a section: the same horizon (initial depth) meets
+the fault further up-dip in the hanging wall than in the footwall. Each wall's horizons are
+fitted as a plane of initial depth, so the offset is taken where the horizons cut the fault,
+not across the wall's width; NaN where the walls share less than MIN_HORIZONS horizons of
+HORIZON_D (a fault whose offset exceeds its picked length) or their horizons run along it.
 """
 
 import argparse
@@ -36,7 +46,7 @@ import numpy as np
 from scipy import stats
 
 from ..atomic import write_text
-from .strain import shear_strain
+from .strain import matched, shear_strain
 
 PERCENTILE = 99.5
 MIN_DIP_DEG = 10.0    # flatter lines are bedding-parallel shear, not thrusts: not reported
@@ -48,6 +58,11 @@ TRIALS = 400          # candidate lines per fault
 MAX_FAULTS = 24
 MIN_FILL = 0.6        # a fault's band is mostly sheared discs: at least this share of the discs in it
 SIGNIFICANCE = 1e-6   # and so many that sheared discs scattered at random would line up so less often
+WALL_D = 3.0          # a fault's walls: the discs up to this beyond its band on either side [d]
+HORIZON_D = 1.0       # horizons are matched across a fault in bands of initial depth this thick [d]
+MIN_HORIZONS = 2      # an offset needs at least this many horizons in both walls
+MIN_WALL_DISCS = 3    # a slip needs at least this many discs in each wall
+MAX_ZONE_D = 12       # a fault's sheared zone is looked for up to this far out on either side [d]
 
 
 class FaultError(Exception):
@@ -168,6 +183,76 @@ def pick_faults(x, y, strain, d_h0, threshold=0.25, min_length=0.5, core_x=0.0, 
     return faults
 
 
+def walls(fault, x, y, d_h0, strain=None, level=0.0):
+    """The discs beside a fault, as a dict: hanging and foot (indices of the hanging wall, above
+    the fault's line, and of the footwall), t and s (every disc's distance up-dip along the fault
+    from its lower end and across it, upwards) [h0], u (the up-dip unit vector) and length. Each
+    wall is WALL_D thick. Without a strain field it starts at the band's edge (BAND_D); with one,
+    where the sheared zone about the fault ends on that side: the first slice of one disc across,
+    going out, whose discs' median `strain` is below `level` (at most MAX_ZONE_D out). A granular
+    fault is a zone several discs wide, and walls inside it would see only part of its slip."""
+    (xa, ya), (xb, yb) = sorted(fault["ends"], key=lambda e: e[1])  # lower end first
+    length = math.hypot(xb - xa, yb - ya)
+    u = np.array([xb - xa, yb - ya]) / length
+    n = np.array([-u[1], u[0]]) if u[0] >= 0 else np.array([u[1], -u[0]])  # the normal pointing up
+    x, y = np.asarray(x, float), np.asarray(y, float)
+    t = (x - xa) * u[0] + (y - ya) * u[1]
+    s = (x - xa) * n[0] + (y - ya) * n[1]
+    along = (t >= 0) & (t <= length)
+    out = {"t": t, "s": s, "u": u, "length": length}
+    for name, side in (("hanging", 1.0), ("foot", -1.0)):
+        inner = BAND_D
+        if strain is not None:
+            while inner < MAX_ZONE_D:
+                here = along & (side * s >= inner * d_h0) & (side * s < (inner + 1) * d_h0)
+                if not here.any() or np.nanmedian(strain[here]) < level:
+                    break
+                inner += 1
+        out[name] = np.flatnonzero(along & (side * s > inner * d_h0) & (side * s <= (inner + WALL_D) * d_h0))
+    return out
+
+
+def slip(wall, before, after):
+    """How much further up-dip the hanging wall (`walls` of `after`) moved than the footwall from
+    `before` to `after` (outputs: x, y, id in h0) [h0]; positive in the sense of a thrust, NaN with
+    too few discs."""
+    prev, known = matched(before, after)
+    u = wall["u"]
+    up = ((after["x"] - before["x"][prev]) * u[0] + (after["y"] - before["y"][prev]) * u[1])
+    hanging, foot = wall["hanging"][known[wall["hanging"]]], wall["foot"][known[wall["foot"]]]
+    if min(len(hanging), len(foot)) < MIN_WALL_DISCS:
+        return math.nan
+    return float(np.median(up[hanging]) - np.median(up[foot]))
+
+
+def offset(wall, depth0, d_h0):
+    """A fault's whole offset from its horizons (module docstring) [h0]. In each wall (`walls`)
+    the initial depth `depth0` (h0) is fitted as a plane, depth0 = c0 + c1 t + c2 s; where a
+    horizon of that plane meets the fault (s = 0) in the hanging wall less where it meets it in
+    the footwall, at the middle of the depths both walls hold. NaN where the walls share less
+    than MIN_HORIZONS horizons or their horizons do not cross the fault."""
+    depth0 = np.asarray(depth0, float)
+    planes, ranges = [], []
+    for side in (wall["hanging"], wall["foot"]):
+        side = side[np.isfinite(depth0[side])]
+        if len(side) < MIN_WALL_DISCS:
+            return math.nan
+        design = np.column_stack([np.ones(len(side)), wall["t"][side], wall["s"][side]])
+        c, *_ = np.linalg.lstsq(design, depth0[side], rcond=None)
+        planes.append(c)
+        ranges.append((depth0[side].min(), depth0[side].max()))
+    lo, hi = max(r[0] for r in ranges), min(r[1] for r in ranges)
+    horizon = HORIZON_D * d_h0
+    if hi - lo < MIN_HORIZONS * horizon:
+        return math.nan
+    # Horizons that barely change along the fault (beds parallel to it) do not say where they cut it.
+    if min(abs(c[1]) for c in planes) * wall["length"] < horizon:
+        return math.nan
+    z = 0.5 * (lo + hi)
+    (a_hanging, b_hanging, _), (a_foot, b_foot, _) = planes
+    return float((z - a_hanging) / b_hanging - (z - a_foot) / b_foot)
+
+
 def spacings(faults):
     """Each fault's distance along the base to the next fault of its side and kind towards the
     foreland (pro: -x, retro: +x); NaN for the outermost."""
@@ -193,7 +278,11 @@ COLUMNS = [("output", "output number [-]"), ("S", "convergence of the output [-]
            ("strain", "mean shear strain of its discs over the window [-]"),
            ("active", "1 when its discs' mean strain over the last output reaches that increment's threshold [-]"),
            ("spacing", "distance along the base to the next fault of its side and kind towards the foreland [h0]"),
-           ("n_discs", "discs of the fault [-]")]
+           ("n_discs", "discs of the fault [-]"),
+           ("slip", "how much further up-dip its hanging wall moved than its footwall over the window "
+                    "(positive: thrust sense) [h0]"),
+           ("offset", "its whole offset: how far up-dip its hanging wall's horizons stand from its footwall's, "
+                      "median over the horizons both walls hold; NaN where they share fewer than two [h0]")]
 
 
 def run_faults(outputs, window=3, threshold=0.25, min_length=0.5):
@@ -210,8 +299,11 @@ def run_faults(outputs, window=3, threshold=0.25, min_length=0.5):
         for f, spacing in zip(faults, spacings(faults)):
             top, bottom = sorted(f["ends"], key=lambda e: -e[1])
             active = recent_level > 0 and float(np.nanmean(recent[f["members"]])) >= recent_level
+            wall = walls(f, now["x"], now["y"], d_h0, total, f["level"])
+            total_offset = offset(wall, now["depth0"], d_h0) if "depth0" in now else math.nan
             rows.append([now["output"], now["S"], f["side"], f["kind"], f["dip_deg"], f["x_base"], top[0], top[1],
-                         bottom[0], bottom[1], f["length"], f["strain"], int(active), spacing, len(f["members"])])
+                         bottom[0], bottom[1], f["length"], f["strain"], int(active), spacing, len(f["members"]),
+                         slip(wall, then, now), total_offset])
     return rows
 
 
@@ -234,7 +326,7 @@ def backstop_x(walls):
 
 def read_outputs(run):
     """Every complete output of a wedge run's snapshots.h5 (doubly- or singly-vergent): x, y
-    (h0; x from the S-point in a doubly-vergent wedge), id, h0 (d), S (a singly-vergent wedge's
+    (h0; x from the S-point in a doubly-vergent wedge), id, depth0 (h0), h0 (d), S (a singly-vergent wedge's
     shortening in h0), the core's x (core_x, h0) and the output number."""
     from ..frames import Snapshots
 
@@ -249,10 +341,11 @@ def read_outputs(run):
                 raise FaultError("%s: not a wedge run (faults are picked in doubly- and singly-vergent wedges)" % run)
             outputs = []
             for k in range(len(snaps)):
-                f = snaps.frame(k, ("x", "y", "id"))
+                f = snaps.frame(k, ("x", "y", "id", "depth0"))
                 singly = experiment == "singly_vergent"
                 core_x = backstop_x(f["walls"]) / h0 if singly else 0.0
-                outputs.append({"x": f["x"] / h0, "y": f["y"] / h0, "id": f["id"], "h0": h0, "core_x": core_x,
+                outputs.append({"x": f["x"] / h0, "y": f["y"] / h0, "id": f["id"], "depth0": f["depth0"] / h0,
+                                "h0": h0, "core_x": core_x,
                                 "S": float(f["attrs"].get("S", np.nan)), "output": f["output"]})
             return outputs
     except (OSError, KeyError, ValueError) as e:

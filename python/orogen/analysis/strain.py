@@ -13,6 +13,14 @@ STRAIN_NEIGHBOURS_H0 = 0.2   # neighbours for the local deformation gradient: wi
 STRAIN_NEIGHBOURS_MIN_D = 1.5  # and at least 1.5 d (the second shell of discs)
 
 
+def matched(before, after):
+    """For each disc of `after`, its index in `before` (by id) and whether it was there."""
+    order = np.argsort(before["id"])
+    pos = np.clip(np.searchsorted(before["id"], after["id"], sorter=order), 0, len(order) - 1)
+    prev = order[pos]
+    return prev, before["id"][prev] == after["id"]
+
+
 def shear_strain(before, after, radius=None):
     """The incremental maximum shear strain of each disc of `after` since `before` (outputs as
     dicts of x, y, id in h0 and h0 in d; module docstring); NaN for discs not in `before` or
@@ -23,11 +31,7 @@ def shear_strain(before, after, radius=None):
         radius = max(STRAIN_NEIGHBOURS_H0, STRAIN_NEIGHBOURS_MIN_D / after["h0"])
     n = len(after["x"])
     strain = np.full(n, np.nan)
-    order = np.argsort(before["id"])
-    pos = np.searchsorted(before["id"], after["id"], sorter=order)
-    pos = np.clip(pos, 0, len(order) - 1)
-    prev = order[pos]
-    known = before["id"][prev] == after["id"]
+    prev, known = matched(before, after)
     idx = np.flatnonzero(known)
     if idx.size < 3:
         return strain
