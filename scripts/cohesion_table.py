@@ -8,7 +8,9 @@ run's config.toml (the first material's bond_tensile_strength). The late pro for
 over the picker's window and whole offset are their medians.
 
     python3 -m orogen.analysis.faults RUN            (each run of the sweep)
-    scripts/cohesion_table.py runs/cohesion          (a Markdown table on standard output)
+    scripts/cohesion_table.py runs/cohesion [runs/cohesion_h20 ...]   (a Markdown table on standard output)
+
+Several sweeps (the same series at several resolutions) give one table, grouped by h0 and strength.
 """
 
 import glob
@@ -30,10 +32,11 @@ def finite_mean(values):
 
 
 def strength_and_seed(run):
+    """(h0 [d], bond strength [rho g d], seed) of a run, from its config.toml."""
     config = open_run(run).config
     materials = config.get("materials", {})
     strength = next(iter(materials.values()))["bond_tensile_strength"] if materials else 0.0
-    return float(strength), int(config["run"]["seed"])
+    return float(config["layer"]["thickness"]), float(strength), int(config["run"]["seed"])
 
 
 def row(run):
@@ -66,8 +69,8 @@ def row(run):
                     intact = int(line.split()[2])
                 elif line.endswith(",tension\n") or line.endswith(",shear\n"):
                     breaks += 1
-    strength, seed = strength_and_seed(run)
-    return {"strength": strength, "seed": seed, "H": cols["H"][last], "alpha": float(np.nanmean(cols["alpha_fit"][late])),
+    h0, strength, seed = strength_and_seed(run)
+    return {"h0": h0, "strength": strength, "seed": seed, "H": cols["H"][last], "alpha": float(np.nanmean(cols["alpha_fit"][late])),
             "beta": finite_mean(cols["beta_fit"][late]), "Dp": cols["Dp"][last],
             "fore": len(fore) / n_out, "back": len(back) / n_out,
             "fore_dip": float(np.mean([float(f["dip_deg"]) for f in fore])) if fore else math.nan,
@@ -76,37 +79,41 @@ def row(run):
             "offset": median_of("offset"), "breaks": breaks, "intact": intact}
 
 
-def main(sweep):
-    runs = sorted((os.path.dirname(p) for p in glob.glob(os.path.join(sweep, "runs", "*", "faults.csv"))),
+def main(sweeps):
+    runs = sorted((os.path.dirname(p) for sweep in sweeps
+                   for p in glob.glob(os.path.join(sweep, "runs", "*", "faults.csv"))),
                   key=strength_and_seed)  # the runs whose faults were picked (those still running are left out)
-    print("| bond strength [rho g d] | seed | H [h0] | pro taper alpha_fit [deg] | retro taper beta_fit [deg] "
+    print("| h0 [d] | bond strength [rho g d] | seed | H [h0] | pro taper alpha_fit [deg] | retro taper beta_fit [deg] "
           "| Dp or width [h0] | pro forethrusts per output | pro backthrusts per output | forethrust dip [deg] "
           "| backthrust dip [deg] | forethrust spacing [h0] | forethrust slip over the window [h0] "
           "| forethrust offset [h0] | bonds broken / made |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     rows = [row(run) for run in runs]
     for r in rows:
         made = r["breaks"] + r["intact"]
-        print("| %g | %d | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.0f | %.0f | %.2f | %.3f | %.2f | %s |" % (
-            r["strength"], r["seed"], r["H"], r["alpha"], r["beta"], r["Dp"], r["fore"], r["back"], r["fore_dip"],
-            r["back_dip"], r["spacing"], r["slip"], r["offset"], "%d / %d" % (r["breaks"], made) if made else "no bonds"))
-    strengths = sorted({r["strength"] for r in rows})
-    if len(rows) > len(strengths):  # seeds: each strength's mean and the spread between seeds
-        print("\n| bond strength [rho g d] | seeds | H [h0] | taper [deg] | forethrusts per output "
+        print("| %g | %g | %d | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.0f | %.0f | %.2f | %.3f | %.2f | %s |" % (
+            r["h0"], r["strength"], r["seed"], r["H"], r["alpha"], r["beta"], r["Dp"], r["fore"], r["back"],
+            r["fore_dip"], r["back_dip"], r["spacing"], r["slip"], r["offset"],
+            "%d / %d" % (r["breaks"], made) if made else "no bonds"))
+    groups = sorted({(r["h0"], r["strength"]) for r in rows})
+    if len(rows) > len(groups):  # seeds: each strength's mean and the spread between seeds
+        print("\n| h0 [d] | bond strength [rho g d] | cohesion against the layer's weight: strength d / h0 [rho g h0] "
+              "| seeds | H [h0] | taper [deg] | forethrusts per output "
               "| forethrust dip [deg] | forethrust spacing [h0] | forethrust slip over the window [h0] "
               "| forethrust offset [h0] |")
-        print("|---|---|---|---|---|---|---|---|---|")
-        for strength in strengths:
-            group = [r for r in rows if r["strength"] == strength]
+        print("|---|---|---|---|---|---|---|---|---|---|---|")
+        for h0, strength in groups:
+            group = [r for r in rows if (r["h0"], r["strength"]) == (h0, strength)]
 
             def both(key, fmt):
                 v = np.array([r[key] for r in group], float)
                 v = v[np.isfinite(v)]
                 return (fmt + " +- " + fmt) % (v.mean(), v.std(ddof=1) if len(v) > 1 else 0.0) if len(v) else "-"
-            print("| %g | %d | %s | %s | %s | %s | %s | %s | %s |" % (
-                strength, len(group), both("H", "%.2f"), both("alpha", "%.1f"), both("fore", "%.1f"),
-                both("fore_dip", "%.0f"), both("spacing", "%.2f"), both("slip", "%.3f"), both("offset", "%.2f")))
+            print("| %g | %g | %.2f | %d | %s | %s | %s | %s | %s | %s | %s |" % (
+                h0, strength, strength / h0, len(group), both("H", "%.2f"), both("alpha", "%.1f"),
+                both("fore", "%.1f"), both("fore_dip", "%.0f"), both("spacing", "%.2f"), both("slip", "%.3f"),
+                both("offset", "%.2f")))
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    main(sys.argv[1:])

@@ -146,7 +146,7 @@ class Offsets(unittest.TestCase):
         share = 0.5 * (1 + np.tanh(across / 0.25))
         x1, y1 = self.x + 0.4 * share * up[0], self.y + 0.4 * share * up[1]
         strain = np.cosh(across / 0.25) ** -2
-        f = faults.pick_faults(x1, y1, strain, d_h0=0.1, seed=1)[0]
+        (f,) = faults.pick_faults(x1, y1, strain, d_h0=0.1, seed=1)  # one zone, one fault
         self.assertAlmostEqual(f["dip_deg"], 30, delta=5)  # a line inside a wide zone may lean
         before, after = {"x": self.x, "y": self.y, "id": self.ids}, {"x": x1, "y": y1, "id": self.ids}
         self.assertLess(faults.slip(faults.walls(f, x1, y1, 0.1), before, after), 0.34)

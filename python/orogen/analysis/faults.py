@@ -174,7 +174,10 @@ def pick_faults(x, y, strain, d_h0, threshold=0.25, min_length=0.5, core_x=0.0, 
         deepens_to_plus_x = slope < 0
         towards_core = deepens_to_plus_x if side == "pro" else not deepens_to_plus_x
         ends = ((centre[0] + t0 * u[0], centre[1] + t0 * u[1]), (centre[0] + t1 * u[0], centre[1] + t1 * u[1]))
-        pool = np.setdiff1d(pool, members)
+        # Its whole sheared zone is this fault's: lines through the rest of it are not other faults.
+        zone = walls({"ends": ends}, x, y, d_h0, w, level)
+        inside = zone["along"] & (zone["s"] <= zone["zone"][0]) & (zone["s"] >= -zone["zone"][1])
+        pool = np.setdiff1d(pool, np.union1d(members, np.flatnonzero(inside)))
         if dip < MIN_DIP_DEG:
             continue
         faults.append({"side": side, "kind": "forethrust" if towards_core else "backthrust", "dip_deg": dip,
@@ -186,7 +189,9 @@ def pick_faults(x, y, strain, d_h0, threshold=0.25, min_length=0.5, core_x=0.0, 
 def walls(fault, x, y, d_h0, strain=None, level=0.0):
     """The discs beside a fault, as a dict: hanging and foot (indices of the hanging wall, above
     the fault's line, and of the footwall), t and s (every disc's distance up-dip along the fault
-    from its lower end and across it, upwards) [h0], u (the up-dip unit vector) and length. Each
+    from its lower end and across it, upwards) [h0], u (the up-dip unit vector), length, along
+    (the discs beside the segment) and zone (how far the sheared zone reaches above and below
+    the line) [h0]. Each
     wall is WALL_D thick. Without a strain field it starts at the band's edge (BAND_D); with one,
     where the sheared zone about the fault ends on that side: the first slice of one disc across,
     going out, whose discs' median `strain` is below `level` (at most MAX_ZONE_D out). A granular
@@ -199,7 +204,7 @@ def walls(fault, x, y, d_h0, strain=None, level=0.0):
     t = (x - xa) * u[0] + (y - ya) * u[1]
     s = (x - xa) * n[0] + (y - ya) * n[1]
     along = (t >= 0) & (t <= length)
-    out = {"t": t, "s": s, "u": u, "length": length}
+    out = {"t": t, "s": s, "u": u, "length": length, "along": along, "zone": []}
     for name, side in (("hanging", 1.0), ("foot", -1.0)):
         inner = BAND_D
         if strain is not None:
@@ -209,6 +214,7 @@ def walls(fault, x, y, d_h0, strain=None, level=0.0):
                     break
                 inner += 1
         out[name] = np.flatnonzero(along & (side * s > inner * d_h0) & (side * s <= (inner + WALL_D) * d_h0))
+        out["zone"].append(inner * d_h0)
     return out
 
 
