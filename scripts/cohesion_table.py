@@ -8,11 +8,14 @@ run's config.toml (the first material's bond_tensile_strength). The late pro for
 over the picker's window and whole offset are their medians.
 
     python3 -m orogen.analysis.faults RUN            (each run of the sweep)
-    scripts/cohesion_table.py runs/cohesion [runs/cohesion_h20 ...]   (a Markdown table on standard output)
+    scripts/cohesion_table.py runs/cohesion [runs/cohesion_h20 ...] [--figure series.png]
 
-Several sweeps (the same series at several resolutions) give one table, grouped by h0 and strength.
+A Markdown table on standard output. Several sweeps (the same series at several resolutions)
+give one table, grouped by h0 and strength; --figure draws the wedge's height, taper and the
+forethrusts' spacing and offset against the cohesion, one colour per h0.
 """
 
+import argparse
 import glob
 import math
 import os
@@ -79,7 +82,38 @@ def row(run):
             "offset": median_of("offset"), "breaks": breaks, "intact": intact}
 
 
-def main(sweeps):
+FIGURE_PANELS = (("H", "wedge height H [h0]"), ("alpha", "surface taper, last quarter [deg]"),
+                 ("spacing", "forethrust spacing [h0]"), ("offset", "forethrust offset [h0]"))
+
+
+def figure(rows, path):
+    """The series against the cohesion (strength d / h0, rho g h0): each run a faint dot, each
+    resolution's mean over its seeds a line with the seeds' spread."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, len(FIGURE_PANELS), figsize=(4.2 * len(FIGURE_PANELS), 3.6), constrained_layout=True)
+    for colour, h0 in zip(("tab:blue", "tab:orange", "tab:green", "tab:red"), sorted({r["h0"] for r in rows})):
+        mine = [r for r in rows if r["h0"] == h0]
+        cohesion = sorted({r["strength"] / h0 for r in mine})
+        for ax, (key, label) in zip(axes, FIGURE_PANELS):
+            ax.plot([r["strength"] / h0 for r in mine], [r[key] for r in mine], "o", color=colour, alpha=0.3, ms=4)
+            stats = [np.array([r[key] for r in mine if r["strength"] / h0 == c], float) for c in cohesion]
+            mean = [np.nanmean(v) if np.isfinite(v).any() else np.nan for v in stats]
+            spread = [np.nanstd(v, ddof=1) if np.isfinite(v).sum() > 1 else 0.0 for v in stats]
+            ax.errorbar(cohesion, mean, yerr=spread, color=colour, marker="s", capsize=3,
+                        label="h0 = %g d (%d runs)" % (h0, len(mine)))
+            ax.set_xlabel("cohesion: bond strength d / h0 [rho g h0]")
+            ax.set_ylabel(label)
+            ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8)
+    fig.suptitle("Singly-vergent cohesion series: the wedge at the end, the pro forethrusts over the last quarter",
+                 fontsize=10)
+    fig.savefig(path, dpi=120)
+
+
+def main(sweeps, figure_path=None):
     runs = sorted((os.path.dirname(p) for sweep in sweeps
                    for p in glob.glob(os.path.join(sweep, "runs", "*", "faults.csv"))),
                   key=strength_and_seed)  # the runs whose faults were picked (those still running are left out)
@@ -113,7 +147,13 @@ def main(sweeps):
                 h0, strength, strength / h0, len(group), both("H", "%.2f"), both("alpha", "%.1f"),
                 both("fore", "%.1f"), both("fore_dip", "%.0f"), both("spacing", "%.2f"), both("slip", "%.3f"),
                 both("offset", "%.2f")))
+    if figure_path:
+        figure(rows, figure_path)
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("sweeps", nargs="+", help="sweep folders (their runs/*/ with faults.csv)")
+    p.add_argument("--figure", default=None, help="also draw the series into this image")
+    a = p.parse_args()
+    main(a.sweeps, a.figure)

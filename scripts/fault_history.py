@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """The faults of one wedge run through time (docs/cohesion-evidence.md, Buiter et al. 2016
 experiment 2): at every `--every`-th output, the forethrusts and backthrusts the picker found
-(orogen.analysis.faults: run it first), how many are active, their mean dips and median spacing,
-and the wedge's surface slope beside the critical taper of its calibrated material.
+(orogen.analysis.faults: run it first), how many are active, their mean dips, the forethrusts'
+median spacing and offset, and the wedge's surface slope beside the critical taper of its
+calibrated material.
 
     python3 -m orogen.analysis.faults RUN
     scripts/fault_history.py RUN [--every 4] [--calibration cal/calibration.json] [--mu-b 0.2867]
@@ -43,8 +44,9 @@ def main(argv=None):
         c = calibrated_taper.critical_tapers(cal, mu_b)
         critical = " (critical taper at mu_b %.3g: %.1f peak, %.1f residual)" % (mu_b, c["peak"], c["residual"])
     print("| output | shortening or S [h0] | forethrusts (active) | backthrusts (active) | forethrust dip [deg] "
-          "| backthrust dip [deg] | forethrust spacing [h0] | surface taper [deg]%s |" % critical)
-    print("|---|---|---|---|---|---|---|---|")
+          "| backthrust dip [deg] | forethrust spacing [h0] | forethrust offset [h0] | surface taper [deg]%s |"
+          % critical)
+    print("|---|---|---|---|---|---|---|---|---|")
     outputs = sorted({int(f["output"]) for f in faults})
     for k in outputs[::a.every] + ([outputs[-1]] if outputs and outputs[-1] not in outputs[::a.every] else []):
         here = [f for f in faults if int(f["output"]) == k]
@@ -56,11 +58,14 @@ def main(argv=None):
             return "%.0f" % np.mean(v) if v else "-"
         spacing = [float(f["spacing"]) for f in fore if f["spacing"] not in ("", "nan")]
         spacing = [v for v in spacing if np.isfinite(v)]
+        offsets = [float(f["offset"]) for f in fore if f.get("offset", "") not in ("", None)]
+        offsets = [v for v in offsets if np.isfinite(v)]
         row = min(k, len(cols[s_col]) - 1)
-        print("| %d | %.2f | %d (%d) | %d (%d) | %s | %s | %s | %.1f |" % (
+        print("| %d | %.2f | %d (%d) | %d (%d) | %s | %s | %s | %s | %.1f |" % (
             k, float(here[0]["S"]), len(fore), sum(int(f["active"]) for f in fore), len(back),
             sum(int(f["active"]) for f in back), mean(fore, "dip_deg"), mean(back, "dip_deg"),
-            "%.2f" % np.median(spacing) if spacing else "-", cols[taper_col][row]))
+            "%.2f" % np.median(spacing) if spacing else "-", "%.2f" % np.median(offsets) if offsets else "-",
+            cols[taper_col][row]))
     return 0
 
 
