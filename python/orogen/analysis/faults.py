@@ -27,14 +27,13 @@ are looked at. The spacing of a fault is the distance along the base (where its 
 to the next fault of its side and kind towards the foreland (NaN for the outermost).
 
 How far a fault has moved, from its walls: the discs just beyond its sheared zone (WALL_D thick,
-along the picked segment), the hanging wall above it and the footwall below.
-Its slip over the window is how much further up-dip the hanging wall's discs moved than the
-footwall's (medians; positive in the sense of a thrust). Its offset, the whole slip it has
-carried, is read as a geologist reads it on a section: the same horizon (initial depth) meets
-the fault further up-dip in the hanging wall than in the footwall. Each wall's horizons are
-fitted as a plane of initial depth, so the offset is taken where the horizons cut the fault,
-not across the wall's width; NaN where the walls share less than MIN_HORIZONS horizons of
-HORIZON_D (a fault whose offset exceeds its picked length) or their horizons run along it.
+along the picked segment), the hanging wall above it and the footwall below. Its slip over the
+window is how much further up-dip the hanging wall's discs moved than the footwall's (medians;
+positive in the sense of a thrust); its offset, the same since the run's first output, is all
+the slip the zone between the two walls has carried (of the wall discs that were there then:
+NaN where fewer were, as for faults in the inflow of a doubly-vergent wedge). Read from the
+walls' motion rather than from their horizons: on the wedges measured (docs/materials.md) the
+horizons' separation along a fault was too noisy to use.
 """
 
 import argparse
@@ -59,8 +58,6 @@ MAX_FAULTS = 24
 MIN_FILL = 0.6        # a fault's band is mostly sheared discs: at least this share of the discs in it
 SIGNIFICANCE = 1e-6   # and so many that sheared discs scattered at random would line up so less often
 WALL_D = 3.0          # a fault's walls: the discs up to this beyond its band on either side [d]
-HORIZON_D = 1.0       # horizons are matched across a fault in bands of initial depth this thick [d]
-MIN_HORIZONS = 2      # an offset needs at least this many horizons in both walls
 MIN_WALL_DISCS = 3    # a slip needs at least this many discs in each wall
 MAX_ZONE_D = 12       # a fault's sheared zone is looked for up to this far out on either side [d]
 
@@ -231,34 +228,6 @@ def slip(wall, before, after):
     return float(np.median(up[hanging]) - np.median(up[foot]))
 
 
-def offset(wall, depth0, d_h0):
-    """A fault's whole offset from its horizons (module docstring) [h0]. In each wall (`walls`)
-    the initial depth `depth0` (h0) is fitted as a plane, depth0 = c0 + c1 t + c2 s; where a
-    horizon of that plane meets the fault (s = 0) in the hanging wall less where it meets it in
-    the footwall, at the middle of the depths both walls hold. NaN where the walls share less
-    than MIN_HORIZONS horizons or their horizons do not cross the fault."""
-    depth0 = np.asarray(depth0, float)
-    planes, ranges = [], []
-    for side in (wall["hanging"], wall["foot"]):
-        side = side[np.isfinite(depth0[side])]
-        if len(side) < MIN_WALL_DISCS:
-            return math.nan
-        design = np.column_stack([np.ones(len(side)), wall["t"][side], wall["s"][side]])
-        c, *_ = np.linalg.lstsq(design, depth0[side], rcond=None)
-        planes.append(c)
-        ranges.append((depth0[side].min(), depth0[side].max()))
-    lo, hi = max(r[0] for r in ranges), min(r[1] for r in ranges)
-    horizon = HORIZON_D * d_h0
-    if hi - lo < MIN_HORIZONS * horizon:
-        return math.nan
-    # Horizons that barely change along the fault (beds parallel to it) do not say where they cut it.
-    if min(abs(c[1]) for c in planes) * wall["length"] < horizon:
-        return math.nan
-    z = 0.5 * (lo + hi)
-    (a_hanging, b_hanging, _), (a_foot, b_foot, _) = planes
-    return float((z - a_hanging) / b_hanging - (z - a_foot) / b_foot)
-
-
 def spacings(faults):
     """Each fault's distance along the base to the next fault of its side and kind towards the
     foreland (pro: -x, retro: +x); NaN for the outermost."""
@@ -287,8 +256,8 @@ COLUMNS = [("output", "output number [-]"), ("S", "convergence of the output [-]
            ("n_discs", "discs of the fault [-]"),
            ("slip", "how much further up-dip its hanging wall moved than its footwall over the window "
                     "(positive: thrust sense) [h0]"),
-           ("offset", "its whole offset: how far up-dip its hanging wall's horizons stand from its footwall's, "
-                      "median over the horizons both walls hold; NaN where they share fewer than two [h0]")]
+           ("offset", "the same since the run's first output: all the slip its zone has carried (NaN where "
+                      "fewer than three discs of a wall were there then) [h0]")]
 
 
 def run_faults(outputs, window=3, threshold=0.25, min_length=0.5):
@@ -306,10 +275,9 @@ def run_faults(outputs, window=3, threshold=0.25, min_length=0.5):
             top, bottom = sorted(f["ends"], key=lambda e: -e[1])
             active = recent_level > 0 and float(np.nanmean(recent[f["members"]])) >= recent_level
             wall = walls(f, now["x"], now["y"], d_h0, total, f["level"])
-            total_offset = offset(wall, now["depth0"], d_h0) if "depth0" in now else math.nan
             rows.append([now["output"], now["S"], f["side"], f["kind"], f["dip_deg"], f["x_base"], top[0], top[1],
                          bottom[0], bottom[1], f["length"], f["strain"], int(active), spacing, len(f["members"]),
-                         slip(wall, then, now), total_offset])
+                         slip(wall, then, now), slip(wall, outputs[0], now)])
     return rows
 
 
@@ -332,7 +300,7 @@ def backstop_x(walls):
 
 def read_outputs(run):
     """Every complete output of a wedge run's snapshots.h5 (doubly- or singly-vergent): x, y
-    (h0; x from the S-point in a doubly-vergent wedge), id, depth0 (h0), h0 (d), S (a singly-vergent wedge's
+    (h0; x from the S-point in a doubly-vergent wedge), id, h0 (d), S (a singly-vergent wedge's
     shortening in h0), the core's x (core_x, h0) and the output number."""
     from ..frames import Snapshots
 
@@ -347,11 +315,10 @@ def read_outputs(run):
                 raise FaultError("%s: not a wedge run (faults are picked in doubly- and singly-vergent wedges)" % run)
             outputs = []
             for k in range(len(snaps)):
-                f = snaps.frame(k, ("x", "y", "id", "depth0"))
+                f = snaps.frame(k, ("x", "y", "id"))
                 singly = experiment == "singly_vergent"
                 core_x = backstop_x(f["walls"]) / h0 if singly else 0.0
-                outputs.append({"x": f["x"] / h0, "y": f["y"] / h0, "id": f["id"], "depth0": f["depth0"] / h0,
-                                "h0": h0, "core_x": core_x,
+                outputs.append({"x": f["x"] / h0, "y": f["y"] / h0, "id": f["id"], "h0": h0, "core_x": core_x,
                                 "S": float(f["attrs"].get("S", np.nan)), "output": f["output"]})
             return outputs
     except (OSError, KeyError, ValueError) as e:
