@@ -57,7 +57,7 @@ TRIALS = 400          # candidate lines per fault
 MAX_FAULTS = 24
 MIN_FILL = 0.6        # a fault's band is mostly sheared discs: at least this share of the discs in it
 SIGNIFICANCE = 1e-6   # and so many that sheared discs scattered at random would line up so less often
-WALL_D = 3.0          # a fault's walls: the discs up to this beyond its band on either side [d]
+WALL_D = 3.0          # a fault's walls: the discs up to this beyond its sheared zone on either side [d]
 MIN_WALL_DISCS = 3    # a slip needs at least this many discs in each wall
 MAX_ZONE_D = 12       # a fault's sheared zone is looked for up to this far out on either side [d]
 
@@ -188,11 +188,11 @@ def walls(fault, x, y, d_h0, strain=None, level=0.0):
     the fault's line, and of the footwall), t and s (every disc's distance up-dip along the fault
     from its lower end and across it, upwards) [h0], u (the up-dip unit vector), length, along
     (the discs beside the segment) and zone (how far the sheared zone reaches above and below
-    the line) [h0]. Each
-    wall is WALL_D thick. Without a strain field it starts at the band's edge (BAND_D); with one,
-    where the sheared zone about the fault ends on that side: the first slice of one disc across,
-    going out, whose discs' median `strain` is below `level` (at most MAX_ZONE_D out). A granular
-    fault is a zone several discs wide, and walls inside it would see only part of its slip."""
+    the line) [h0]. Each wall is WALL_D thick. Without a strain field it starts at the band's
+    edge (BAND_D); with one, where the sheared zone about the fault ends on that side: the first
+    slice of one disc across, going out, whose discs' median `strain` is below `level` (at most
+    MAX_ZONE_D out). A granular fault is a zone several discs wide, and walls inside it would
+    see only part of its slip."""
     (xa, ya), (xb, yb) = sorted(fault["ends"], key=lambda e: e[1])  # lower end first
     length = math.hypot(xb - xa, yb - ya)
     u = np.array([xb - xa, yb - ya]) / length
