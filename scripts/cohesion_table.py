@@ -34,7 +34,7 @@ def finite_mean(values):
     return float(v.mean()) if len(v) else math.nan
 
 
-def strength_and_seed(run):
+def h0_strength_seed(run):
     """(h0 [d], bond strength [rho g d], seed) of a run, from its config.toml."""
     config = open_run(run).config
     materials = config.get("materials", {})
@@ -72,7 +72,7 @@ def row(run):
                     intact = int(line.split()[2])
                 elif line.endswith(",tension\n") or line.endswith(",shear\n"):
                     breaks += 1
-    h0, strength, seed = strength_and_seed(run)
+    h0, strength, seed = h0_strength_seed(run)
     return {"h0": h0, "strength": strength, "seed": seed, "H": cols["H"][last], "alpha": float(np.nanmean(cols["alpha_fit"][late])),
             "beta": finite_mean(cols["beta_fit"][late]), "Dp": cols["Dp"][last],
             "fore": len(fore) / n_out, "back": len(back) / n_out,
@@ -116,7 +116,7 @@ def figure(rows, path):
 def main(sweeps, figure_path=None):
     runs = sorted((os.path.dirname(p) for sweep in sweeps
                    for p in glob.glob(os.path.join(sweep, "runs", "*", "faults.csv"))),
-                  key=strength_and_seed)  # the runs whose faults were picked (those still running are left out)
+                  key=h0_strength_seed)  # the runs whose faults were picked (those still running are left out)
     print("| h0 [d] | bond strength [rho g d] | seed | H [h0] | pro taper alpha_fit [deg] | retro taper beta_fit [deg] "
           "| Dp or width [h0] | pro forethrusts per output | pro backthrusts per output | forethrust dip [deg] "
           "| backthrust dip [deg] | forethrust spacing [h0] | forethrust slip over the window [h0] "
