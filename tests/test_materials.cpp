@@ -1,9 +1,11 @@
 // Named materials against their analytic cases (docs/materials.md): a bonded pair pulled apart
 // breaks at its tensile strength and sheared at its shear strength, a bonded beam of discs
-// bends as the discrete beam does, a slip-weakening contact follows its curve, and the units
-// of a layer take their materials by height.
+// bends as the discrete beam does, a slip-weakening contact follows its curve, a contact that
+// resists rolling follows its elastic-plastic curve, and the units of a layer take their
+// materials by height.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -273,6 +275,57 @@ TEST(Weakening, AContactOfTwoMaterialsSlidesAtTheWeakerFriction) {
   inside(w).discs.material[2] = 1;
   EXPECT_DOUBLE_EQ(w.contact_friction(0, 1), 0.6);
   EXPECT_DOUBLE_EQ(w.contact_friction(1, 2), 0.1);
+}
+
+TEST(Rolling, AContactTurnedWithoutSlidingFollowsItsElasticPlasticCurve) {
+  // Two discs pressed together (overlap 0.001: F_n = 10), the lower spun at -omega (kinematic),
+  // the upper at +omega (put back in place after every step): the contact point does not slide
+  // (v_t = 0, no tangential force), the discs turn against each other at 2 omega. The rolling
+  // moment on the upper disc is -k_r theta, k_r = k_s r_eff^2, theta the relative rotation, up to
+  // mu_r r_eff F_n, then it stays there; spun back, it unloads along k_r to the opposite limit.
+  // The lower disc takes the opposite moment. Once through contact.rolling_friction (the
+  // thesis's one material), once through a material's rolling_friction; a list build halfway up
+  // the spring carries its history.
+  for (const bool materials : {false, true}) {
+    SCOPED_TRACE(materials ? "a material's rolling_friction" : "contact.rolling_friction");
+    Material m = bonding(0, 0);
+    m.rolling_friction = materials ? 0.1 : 0.0;
+    World w = bonded_world({{0, 0}, {0, 0.999}}, m);
+    if (!materials) {
+      inside(w).discs.has_materials = false;
+      inside(w).discs.material.clear();
+      inside(w).discs.slip.clear();
+      inside(w).law.rolling_friction = 0.1;
+    }
+    double omega = 0.02;
+    w.edit_motion([&](MotionEdit& e) { e.disc(0, Motion::Kinematic); });
+    inside(w).discs.omega[0] = -omega;
+    inside(w).discs.omega[1] = omega;
+    w.hooks().add(Stage::AfterIntegration, "hold", [&](World& world) {
+      inside(world).discs.x[1] = 0; inside(world).discs.y[1] = 0.999;
+      inside(world).discs.vx[1] = inside(world).discs.vy[1] = 0;
+      inside(world).discs.omega[0] = -omega;
+      inside(world).discs.omega[1] = omega;
+    });
+    std::vector<DiscForce> forces;
+    orogen::testing::record_step_forces(w, forces);
+    const double kr = kKs * 0.25 * 0.25, limit = 0.1 * 0.25 * kKn * 0.001;
+    double theta = 0;  // the relative rotation the spring holds
+    for (int s = 0; s < 150; ++s) {
+      if (s == 100) {  // spun back
+        omega = -omega;
+        inside(w).discs.omega[0] = -omega;
+        inside(w).discs.omega[1] = omega;
+      }
+      if (s == 10) w.rebuild_contacts(false);
+      w.advance();
+      theta = std::clamp(theta + 2 * omega * w.dt(), -limit / kr, limit / kr);
+      EXPECT_NEAR(forces[1].torque, -kr * theta, 1e-12) << "step " << s;
+      EXPECT_EQ(forces[0].torque, -forces[1].torque) << "step " << s;
+      EXPECT_EQ(forces[1].fx, 0.0);
+    }
+    EXPECT_NEAR(forces[1].torque, limit, 1e-12);  // at the opposite limit after unloading
+  }
 }
 
 TEST(Units, DiscsTakeTheMaterialOfTheUnitAtTheirHeight) {

@@ -116,6 +116,28 @@ TEST_F(MaterialsCli, BondsBreakTheSameForOneAndTwoThreadsAndAcrossAResume) {
   EXPECT_GT(slip, 0.5);
 }
 
+// Rolling resistance (docs/model.md): the same layered wedge with every contact resisting rolling
+// (contact.rolling_friction, the default of both materials; the settling before the materials
+// resists too) gives the same bits for one and two threads and across a kill and resume, its
+// rolling histories in the checkpoint; and it is not the wedge without it.
+TEST_F(MaterialsCli, RollingResistanceIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
+  const fs::path config = write("layered.toml", kLayered);
+  const std::string rolling = " --set contact.rolling_friction=0.2";
+  const fs::path plain = dir_ / "plain", one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
+  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
+  const std::string run = "run '" + config.string() + "' --out '";
+  ASSERT_EQ(run_orogen(run + plain.string() + "' --threads 1", dir_, env).status, 0);
+  ASSERT_EQ(run_orogen(run + one.string() + "' --threads 1" + rolling, dir_, env).status, 0);
+  ASSERT_EQ(run_orogen(run + two.string() + "' --threads 2" + rolling, dir_, env).status, 0);
+  expect_same_outputs(one, two, kLayeredFiles);
+  auto r = run_orogen(run + killed.string() + "' --threads 1 --abort-after-outputs 3" + rolling, dir_);
+  ASSERT_EQ(r.status, 137) << r.err;
+  r = run_orogen("run --resume '" + killed.string() + "'", dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  expect_same_outputs(one, killed, kLayeredFiles);
+  EXPECT_NE(slurp(plain / "series.csv"), slurp(one / "series.csv"));
+}
+
 // The Brazilian test keeps its peak force in the checkpoint: one and two threads and a kill
 // after its peak give the same bits, summary included.
 TEST_F(MaterialsCli, ABrazilianTestIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
@@ -163,6 +185,8 @@ TEST_F(MaterialsCli, BadMaterialsAndUnitsExitWith2AndWriteNothing) {
       {base + "[singly]\nbasal_weakening = 0.3\n", {"singly.basal_weakening", "0.3", "[materials.NAME]"}},
       {base + "[singly]\nbasal_weakening = 1.0\n" + rock, {"singly.basal_weakening", "< 1"}},
       {"[wedge]\nbasal_weakening = 0.2\n", {"wedge.basal_weakening", "0.2", "[materials.NAME]"}},
+      {base + rock + "rolling_friction = -0.1\n", {"materials.rock.rolling_friction", "-0.1", ">= 0"}},
+      {base + "[contact]\nrolling_stiffness = 3.0\n", {"contact.rolling_stiffness", "3.0", "<= 2"}},
   };
   int k = 0;
   for (const auto& c : cases) {

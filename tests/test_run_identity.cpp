@@ -30,6 +30,22 @@ TEST(RunIdentity, LaterKeysCountOnlyAwayFromTheirDefaults) {
             identity_with({"contact.damping=per_mass"}));
 }
 
+// Rolling resistance came after runs were made: a resolved configuration without its keys (the
+// contact's and a material's) has the identity of one with them at their defaults.
+TEST(RunIdentity, AnOlderRunsConfigurationWithoutRollingResistanceKeepsItsIdentity) {
+  const Config layered = Config::load(std::nullopt, {"materials.rock.friction=0.5"});
+  std::string older = layered.to_toml();
+  for (const std::string key : {"rolling_friction = 0.0\n", "rolling_stiffness = 1.0\n"})
+    for (std::size_t at; (at = older.find("\n" + key)) != std::string::npos;) older.erase(at + 1, key.size());
+  ASSERT_EQ(older.find("\nrolling_"), std::string::npos);
+  EXPECT_EQ(run_identity(layered), run_identity_of_toml(older));
+  EXPECT_EQ(config_differences(layered.to_toml(), older, "config.toml", "the checkpoint"), "");
+  EXPECT_NE(run_identity(Config::load(std::nullopt, {"materials.rock.friction=0.5", "contact.rolling_friction=0.1"})),
+            run_identity(layered));
+  EXPECT_NE(run_identity(Config::load(std::nullopt, {"materials.rock.friction=0.5", "materials.rock.rolling_friction=0.1"})),
+            run_identity(layered));
+}
+
 // wedge.traction_law came with the fix of the traction base (issue 38): its default, the
 // Coulomb belt, is not what older runs computed. A configuration Orogen wrote (a run's
 // config.toml) that lacks it is of such a run and holds its value before, eq. 4.1's drag, so

@@ -356,6 +356,7 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
     // run made before the key: the key holds the value that computes what that run computed.
     if (text.find(kResolvedHeading) != std::string::npos)
       for (const auto& later : later_keys()) {
+        if (later.name.starts_with(kAnyMaterial)) continue;  // a material's: its default is the value before
         const std::size_t idx = *find_key(later.name);
         if (cfg.sources_[idx] != kDefault || later.before == format_value(cfg.values_[idx])) continue;
         const toml::table parsed = toml::parse("v = " + later.before);
@@ -395,7 +396,8 @@ Config Config::load(const std::optional<std::filesystem::path>& file,
     }
     cfg.sources_[*idx] = kSetSource;
   }
-  finish_layering(cfg.layering_, cfg.get_float("layer.thickness"), cfg.source_of("layer.thickness"));
+  finish_layering(cfg.layering_, cfg.get_float("layer.thickness"), cfg.source_of("layer.thickness"),
+                  cfg.get_float("contact.rolling_friction"));
   return cfg;
 }
 

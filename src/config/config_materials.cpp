@@ -27,6 +27,7 @@ double& field(Material& m, std::string_view key) {
   if (key == "friction") return m.friction;
   if (key == "friction_residual") return m.friction_residual;
   if (key == "weakening_distance") return m.weakening_distance;
+  if (key == "rolling_friction") return m.rolling_friction;
   if (key == "bond_tensile_strength") return m.bond.tensile_strength;
   if (key == "bond_shear_strength") return m.bond.shear_strength;
   if (key == "bond_stiffness") return m.bond.stiffness;
@@ -155,13 +156,15 @@ void set_material_override(LayeringConfig& out, const std::string& name, const s
   if (out.source == "default") out.source = std::string(kSet);
 }
 
-void finish_layering(LayeringConfig& l, double layer_thickness, const std::string& thickness_source) {
+void finish_layering(LayeringConfig& l, double layer_thickness, const std::string& thickness_source,
+                     double rolling_friction) {
   for (std::size_t k = 0; k < l.materials.size(); ++k) {
     Material& m = l.materials.list[k];
     const std::string prefix = "materials." + m.name + ".";
     if (std::isnan(m.friction))
       throw config_error(l.source, prefix + "friction", "", "required: the material's peak Coulomb coefficient, >= 0");
     if (!given(l, k, "friction_residual")) m.friction_residual = m.friction;
+    if (!given(l, k, "rolling_friction")) m.rolling_friction = rolling_friction;
     if (!given(l, k, "bond_shear_strength")) m.bond.shear_strength = m.bond.tensile_strength;
     if (m.friction_residual > m.friction)
       throw config_error(l.source, prefix + "friction_residual", format_float(m.friction_residual),

@@ -23,10 +23,11 @@ void take_layering(toml::table& root, const std::string& path, LayeringConfig& o
 bool is_material_override(std::string_view name);
 void set_material_override(LayeringConfig& out, const std::string& name, const std::string& raw);
 
-// The defaults that follow other keys (friction_residual, bond_shear_strength), then the checks
-// across keys: a residual above the peak, a bond without one of its strengths, units without
-// materials, units thicker than the layer.
-void finish_layering(LayeringConfig& l, double layer_thickness, const std::string& thickness_source);
+// The defaults that follow other keys (friction_residual, bond_shear_strength, rolling_friction:
+// contact.rolling_friction), then the checks across keys: a residual above the peak, a bond
+// without one of its strengths, units without materials, units thicker than the layer.
+void finish_layering(LayeringConfig& l, double layer_thickness, const std::string& thickness_source,
+                     double rolling_friction);
 
 // The resolved copy: `units = [...]` (a line of [layer]) and the [materials.NAME] tables.
 std::string units_toml(const LayeringConfig& l);

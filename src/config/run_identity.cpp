@@ -53,7 +53,8 @@ namespace {
 // (schema.hpp, LaterKey).
 std::map<std::string, std::string> stored_key_values(std::string_view toml) {
   auto kv = key_values(toml);
-  for (const auto& key : later_keys()) kv.emplace(key.name, key.before);
+  for (const auto& key : later_keys())
+    if (!key.name.starts_with(kAnyMaterial)) kv.emplace(key.name, key.before);
   return kv;
 }
 }  // namespace
@@ -71,14 +72,22 @@ std::string config_differences(std::string_view here, std::string_view there, st
   auto free_to_differ = [](const std::string& key) {
     return is_extension_key(key) || is_analysis_key(key) || is_display_key(key);
   };
+  // A material's later key that one side lacks holds its value before there (kAnyMaterial).
+  auto absent_as_before = [](const std::string& key, const std::string& value) {
+    const LaterKey* later = find_later_key(key);
+    return later != nullptr && later->before == value;
+  };
   for (const auto& [key, value] : a) {
     if (free_to_differ(key)) continue;
     const auto it = b.find(key);
-    if (it == b.end()) add(key, value, "");
-    else if (it->second != value) add(key, value, it->second);
+    if (it == b.end()) {
+      if (!absent_as_before(key, value)) add(key, value, "");
+    } else if (it->second != value) {
+      add(key, value, it->second);
+    }
   }
   for (const auto& [key, value] : b)
-    if (!a.contains(key) && !free_to_differ(key)) add(key, "", value);
+    if (!a.contains(key) && !free_to_differ(key) && !absent_as_before(key, value)) add(key, "", value);
   return out;
 }
 

@@ -158,6 +158,13 @@ const std::vector<KeySpec>& schema() {
            "(LAMMPS gran/hooke/history's gamma_n) [sqrt(g/d)]"),
       real("contact.tangential_damping_ratio", 0.0, ge(0), le(1),
            "tangential to normal damping gamma_s / gamma_n [-]"),
+      real("contact.rolling_friction", 0.0, ge(0), le(1),
+           "rolling resistance mu_r: a spring on two touching discs' relative rotation, its moment capped at "
+           "mu_r r_eff F_n (docs/model.md); 0 = none, the thesis's law; the default of every material's "
+           "rolling_friction [-]"),
+      real("contact.rolling_stiffness", 1.0, gt(0), le(2),
+           "stiffness of the rolling spring in units of k_s r_eff^2; at most 2 keeps its rotation no faster than "
+           "the normal spring's vibration, so the time step bound holds [-]"),
 
       real("time.dt", 0.0, ge(0), none,
            "time step, 0 = computed from stiffness and smallest mass [sqrt(d/g)]"),
@@ -407,12 +414,15 @@ const std::vector<LaterKey>& later_keys() {
           "surface.windward", "surface.windward_factor", "surface.base_level", "surface.deposition",
           "surface.recycling", "surface.sediment_material", "surface.sediment_supply", "surface.supply_to",
           "isostasy.model", "isostasy.mantle_density",
-          "isostasy.rigidity", "isostasy.every", "isostasy.segment_length"})
+          "isostasy.rigidity", "isostasy.every", "isostasy.segment_length", "contact.rolling_friction",
+          "contact.rolling_stiffness"})
       out.push_back({std::string(name), format_value(schema()[*find_key(name)].default_value)});
     // The fix of the traction base (issue 38): runs before it dragged the layer by eq. 4.1.
     out.push_back({"wedge.traction_law", format_value(std::string("drag"))});
     // The robust deformation fronts (issue 36): runs before them measured the discs' extremes.
     out.push_back({"wedge.fronts", format_value(std::string("discs"))});
+    // A key of every material ([materials.NAME]): matched by find_later_key for any NAME.
+    out.push_back({std::string(kAnyMaterial) + "rolling_friction", format_value(0.0)});
     return out;
   }();
   return keys;
@@ -421,6 +431,12 @@ const std::vector<LaterKey>& later_keys() {
 const LaterKey* find_later_key(std::string_view name) {
   for (const auto& k : later_keys())
     if (k.name == name) return &k;
+  // materials.NAME.KEY: a later key of every material.
+  if (name.starts_with("materials.") && name.find('.', 10) != std::string_view::npos) {
+    const std::string any = std::string(kAnyMaterial) + std::string(name.substr(name.rfind('.') + 1));
+    for (const auto& k : later_keys())
+      if (k.name == any) return &k;
+  }
   return nullptr;
 }
 
@@ -494,6 +510,9 @@ const std::vector<KeySpec>& material_schema() {
            "friction after weakening_distance of slip; at most friction (default: friction, no weakening) [-]"),
       real("weakening_distance", 1.0, gt(0), none,
            "slip a disc accumulates on its contacts while its friction falls linearly from peak to residual [d]"),
+      real("rolling_friction", 0.0, ge(0), le(1),
+           "rolling resistance mu_r of the material's contacts; a contact of two materials takes the smaller "
+           "(default: contact.rolling_friction) [-]"),
       real("bond_tensile_strength", 0.0, ge(0), none,
            "tensile strength of the bonds between the material's touching discs; 0 with bond_shear_strength 0: no "
            "bonds [rho g d]"),
@@ -539,6 +558,7 @@ std::string reference_markdown() {
     if (k.name == "friction") def = "required";
     if (k.name == "friction_residual") def = "`friction`";
     if (k.name == "bond_shear_strength") def = "`bond_tensile_strength`";
+    if (k.name == "rolling_friction") def = "`contact.rolling_friction`";
     out += "| `" + k.name + "` | float | " + def + " | " + allowed_text(k) + " | " + k.doc + " |\n";
   }
   out += "\n### [[layer.units]]\n\n";

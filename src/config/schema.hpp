@@ -72,6 +72,9 @@ struct LaterKey {
   std::string name;
   std::string before;
 };
+// A later key of every material is named kAnyMaterial + KEY ("materials.*.KEY"): find_later_key
+// finds it for materials.NAME.KEY of any NAME; it names no key of schema().
+inline constexpr std::string_view kAnyMaterial = "materials.*.";
 const std::vector<LaterKey>& later_keys();
 const LaterKey* find_later_key(std::string_view name);  // nullptr: not a later key
 

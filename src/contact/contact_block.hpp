@@ -24,6 +24,9 @@ struct ContactBlock {
   // Outputs.
   alignas(64) double fx[kContactBlock], fy[kContactBlock], ft[kContactBlock];
   alignas(64) double slip[kContactBlock];  // sliding in this step (weakening; 0 off the limit)
+  // Rolling resistance only: the pair's coefficient in, the rolling history in and out, the
+  // rolling moment on the second disc out (its opposite acts on the first).
+  alignas(64) double mur[kContactBlock], roll[kContactBlock], moment[kContactBlock];
   alignas(64) std::int64_t touching[kContactBlock];  // as wide as a double: one vector type
 };
 
@@ -74,6 +77,21 @@ inline ContactLane contact_lane(double dx, double dy, double ri, double rj, doub
           touching && t.slip ? std::fabs(xi_old + vt * dt - t.xi) : 0.0};
 }
 
+// Rolling resistance of one pair (Iwashita and Oda 1998; the elastic-plastic spring of Ai et al.
+// 2011 without its dashpot): a spring of stiffness kr_per_r2 r_eff^2 on the discs' relative
+// rotation (the history, advanced by (w_j - w_i) dt), its moment capped at mu_r r_eff times the
+// load that caps the tangential force; the same piece as the tangential spring. The moment acts
+// on the second disc, its opposite on the first; zero, with zero history, for a pair apart.
+struct RollingLane {
+  double moment, roll;
+};
+inline RollingLane rolling_lane(bool touching, double ri, double rj, double wi, double wj, double roll_old,
+                                double load, double kr_per_r2, double mur, double dt) {
+  const double r_eff = ri * rj / (ri + rj);
+  const Tangential r = tangential_spring(roll_old, wj - wi, dt, kr_per_r2 * r_eff * r_eff, 0.0, mur * r_eff * load);
+  return {touching ? r.ft : 0.0, touching ? r.xi : 0.0};
+}
+
 // Every pair with the friction mu (the thesis's one material).
 template <class Normal>
 inline void contact_forces_block(ContactBlock& b, int count, double kn, double ks, double mu, double dt) {
@@ -94,6 +112,23 @@ inline void contact_forces_block_materials(ContactBlock& b, int count, double kn
     const ContactLane c = contact_lane<Normal>(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k],
                                                b.wj[k], b.gn[k], b.gs[k], b.xi[k], kn, ks, b.mu[k], dt);
     b.fx[k] = c.fx; b.fy[k] = c.fy; b.ft[k] = c.ft; b.xi[k] = c.xi; b.slip[k] = c.slip;
+    b.touching[k] = c.touching;
+  }
+}
+
+// Each pair with its own friction b.mu[k] and rolling resistance b.mur[k]: the slip on the limit
+// and the rolling moment out.
+template <class Normal>
+inline void contact_forces_block_rolling(ContactBlock& b, int count, double kn, double ks, double kr_per_r2,
+                                         double dt) {
+#pragma omp simd
+  for (int k = 0; k < count; ++k) {
+    const ContactLane c = contact_lane<Normal>(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k],
+                                               b.wj[k], b.gn[k], b.gs[k], b.xi[k], kn, ks, b.mu[k], dt);
+    const RollingLane r = rolling_lane(c.touching, b.ri[k], b.rj[k], b.wi[k], b.wj[k], b.roll[k],
+                                       Normal::load(c.fn), kr_per_r2, b.mur[k], dt);
+    b.fx[k] = c.fx; b.fy[k] = c.fy; b.ft[k] = c.ft; b.xi[k] = c.xi; b.slip[k] = c.slip;
+    b.roll[k] = r.roll; b.moment[k] = r.moment;
     b.touching[k] = c.touching;
   }
 }

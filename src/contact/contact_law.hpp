@@ -25,6 +25,11 @@ struct ContactLaw {
   double restitution = 0.2;   // e_n, for NormalDamping::Restitution
   double damping_rate = 0.0;  // gamma_n / m_eff, for NormalDamping::PerMass
   double tangential_damping_ratio = 0.0;  // gamma_s = ratio * gamma_n
+  // Rolling resistance (docs/model.md "Rolling resistance"): an elastic-plastic spring on the
+  // pair's relative rotation, its moment capped at rolling_friction r_eff F_n. 0: none (the
+  // thesis's law; the pair loops then keep no rolling history at all).
+  double rolling_friction = 0.0;   // mu_r
+  double rolling_stiffness = 1.0;  // k_r in units of k_s r_eff^2
 
   // Normal dashpot coefficient for a pair of effective mass m_eff integrated with step dt.
   // For Restitution the damping ratio is calibrated to the discrete integrator (see

@@ -18,6 +18,9 @@ struct PairContacts {
   std::vector<std::int64_t> id_first, id_second;  // stable ids: the key the history is carried by
   std::vector<double> xi;                         // tangential spring history
   std::vector<double> gamma_n;                    // normal dashpot coefficient
+  // Rolling spring history (relative rotation) while some contact resists rolling
+  // (ContactLaw::rolling_friction, Material::rolling_friction); empty otherwise.
+  std::vector<double> roll;
   std::size_t size() const { return xi.size(); }
 };
 

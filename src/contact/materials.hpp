@@ -29,6 +29,7 @@ struct Material {
   double friction = 0.3;           // peak Coulomb coefficient
   double friction_residual = 0.3;  // after weakening_distance of slip
   double weakening_distance = 1;   // accumulated slip from peak to residual [d]
+  double rolling_friction = 0;     // mu_r of its contacts (ContactLaw::rolling_friction)
   BondProperties bond;
 
   // Friction of a disc of this material that has slipped `slip` on its contacts: linear from
@@ -42,6 +43,8 @@ struct Material {
 // Friction of a contact between two discs of (weakened) frictions mu_i and mu_j: the weaker, so
 // that a weak layer slides on its neighbours as it does within itself (PFC's rule).
 inline double pair_friction(double mu_i, double mu_j) { return std::min(mu_i, mu_j); }
+// The same rule for the rolling resistance of a contact between two materials.
+inline double pair_rolling_friction(double mur_i, double mur_j) { return std::min(mur_i, mur_j); }
 
 // One unit of the incoming section ([[layer.units]]), listed from the base up.
 struct LayerUnit {
@@ -59,6 +62,10 @@ struct MaterialTable {
   // Whether any material makes bonds.
   bool any_bonds() const {
     return std::any_of(list.begin(), list.end(), [](const Material& m) { return m.bond.bonds(); });
+  }
+  // Whether any material resists rolling.
+  bool any_rolling() const {
+    return std::any_of(list.begin(), list.end(), [](const Material& m) { return m.rolling_friction > 0; });
   }
 };
 

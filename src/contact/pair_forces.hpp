@@ -23,9 +23,17 @@ struct PairScratch {
   std::uint64_t split_build = ~std::uint64_t{0};  // the list build the cut was made for
 };
 
-// `mu_disc`: nullptr for the one material of contact.mu, else each disc's friction of this
-// step (named materials: a pair slides at the weaker of its two, and the slip of each contact on
-// the Coulomb limit is added to both discs' Discs::slip).
+// Each disc's coefficients of this step in a world of named materials; nullptr: the law's for
+// every pair. `friction`: a pair slides at the weaker of its two, and the slip of each contact on
+// the Coulomb limit is added to both discs' Discs::slip. `rolling`: a pair resists rolling with
+// the weaker of its two (read only while the store keeps rolling histories, PairContacts::roll;
+// with none, no contact resists rolling).
+struct DiscCoefficients {
+  const double* friction = nullptr;
+  const double* rolling = nullptr;
+};
+
+// `disc`: see DiscCoefficients.
 // Sets the forces to the sum of the discs' contact forces, chunk by chunk (see
 // NeighborList::chunk_start), the chunks and discs cut between the threads of a team by `split`:
 // bitwise the same result for any number of threads and any split. Every thread t of the team
@@ -33,13 +41,14 @@ struct PairScratch {
 // leaves them so); it sums its even chunks, then its odd ones, with the team's barriers
 // between (so the forces are whole when it returns).
 void pair_forces_share(const NeighborList& list, PairContacts& contacts, Discs& discs, const ContactLaw& law,
-                       const double* mu_disc, double dt, DiscForce* forces, const ThreadSplit& split, std::size_t t);
+                       const DiscCoefficients& disc, double dt, DiscForce* forces, const ThreadSplit& split,
+                       std::size_t t);
 
 // One parity of share t's chunks (0: the even ones, 1: the odd ones), added onto `forces`, with
 // no barrier: for a step whose parities run apart, with an exchange between them (ranks that
 // hold copies of the world, parallel/rank_step.hpp). Even then odd gives pair_forces_share's bits.
 void pair_forces_parity(const NeighborList& list, PairContacts& contacts, Discs& discs, const ContactLaw& law,
-                        const double* mu_disc, double dt, DiscForce* forces, const ThreadSplit& split, std::size_t t,
-                        int parity);
+                        const DiscCoefficients& disc, double dt, DiscForce* forces, const ThreadSplit& split,
+                        std::size_t t, int parity);
 
 }  // namespace orogen

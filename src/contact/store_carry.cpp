@@ -20,6 +20,12 @@ HistoryCarry index_pair_history(const PairContacts& pairs, std::int64_t max_id) 
   return h;
 }
 
+HistoryCarry index_rolling_history(const PairContacts& pairs, std::int64_t max_id) {
+  HistoryCarry h;
+  h.index(pairs.id_first, pairs.id_second, pairs.roll, max_id);
+  return h;
+}
+
 HistoryCarry index_wall_history(const WallContacts& walls, std::int64_t max_id) {
   HistoryCarry h;
   const std::vector<std::int64_t> wall_key(walls.wall.begin(), walls.wall.end());
@@ -38,6 +44,13 @@ void carry_pair_history(PairContacts& pairs, const NeighborList& L, const Discs&
     pairs.id_second[p] = d.id[L.second[p]];
     pairs.xi[p] = old.find(pairs.id_first[p], pairs.id_second[p]);
   }
+}
+
+void carry_rolling_history(PairContacts& pairs, const HistoryCarry& old) {
+  const auto n = static_cast<std::ptrdiff_t>(pairs.size());
+  pairs.roll.resize(pairs.size());
+#pragma omp parallel for schedule(static) if (n > min_parallel_items())
+  for (std::ptrdiff_t p = 0; p < n; ++p) pairs.roll[p] = old.find(pairs.id_first[p], pairs.id_second[p]);
 }
 
 void carry_wall_history(WallContacts& wc, const HistoryCarry& old) {

@@ -16,9 +16,13 @@ std::int64_t max_stored_id(const ContactStore& store);
 // Indexes the old pair (first id, second id) and wall (disc id, wall) histories.
 HistoryCarry index_pair_history(const PairContacts& pairs, std::int64_t max_id);
 HistoryCarry index_wall_history(const WallContacts& walls, std::int64_t max_id);
+// Indexes the old pairs' rolling histories (PairContacts::roll, which must not be empty).
+HistoryCarry index_rolling_history(const PairContacts& pairs, std::int64_t max_id);
 
 // Sets the new pairs' stable ids (from the list and discs) and their carried histories.
 void carry_pair_history(PairContacts& pairs, const NeighborList& list, const Discs& discs, const HistoryCarry& old);
+// Sets the new pairs' rolling histories, after carry_pair_history has set their ids.
+void carry_rolling_history(PairContacts& pairs, const HistoryCarry& old);
 // Sets the new wall contacts' carried histories (their disc ids are set by their search).
 void carry_wall_history(WallContacts& walls, const HistoryCarry& old);
 

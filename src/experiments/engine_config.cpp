@@ -27,6 +27,8 @@ void apply_engine_config(const Config& c, World& w) {
                                    "is the clamped linear law's); give the dashpot as contact.damping_rate",
                                    c.get_string("contact.normal_force")));
   law.tangential_damping_ratio = c.get_float("contact.tangential_damping_ratio");
+  law.rolling_friction = c.get_float("contact.rolling_friction");
+  law.rolling_stiffness = c.get_float("contact.rolling_stiffness");
   w.set_contact_law(law);
   w.set_neighbor_skin(c.get_float("neighbor.skin"));
   w.set_sort_every(c.get_int32("neighbor.sort_every"));

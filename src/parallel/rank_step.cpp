@@ -35,6 +35,7 @@ void check_steppable_over_ranks(const World& world) {
   const char* missing = nullptr;
   if (!world.bonds().id_a.empty()) missing = "bonds";
   else if (world.discs().has_materials) missing = "named materials (per-disc friction and slip)";
+  else if (world.law().rolling_friction > 0) missing = "rolling resistance (contact.rolling_friction)";
   else if (!world.hooks().only_pins(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration) ||
            world.hooks().pins().size() > 1)
     missing = "hooks inside the step (other than one pin: the constant-velocity base's)";
@@ -81,7 +82,7 @@ void RankStep::post(Phase phase) {
     case Phase::OddPairs: {
       const int parity = phase == Phase::EvenPairs ? 0 : 1;
       on_threads([&](const ThreadSplit& threads, std::size_t t) {
-        pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, nullptr,
+        pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, DiscCoefficients{},
                            access_.dt, forces, threads, t, parity);
       });
       if (parity == 0 && !dropped(Exchange::PartialSums)) send_sums(plan_.partial_sums);

@@ -25,12 +25,15 @@ BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clus
   const std::int64_t max_id = std::max(scan.max_id, max_stored_id(store));
   const HistoryCarry pair_history = index_pair_history(store.pairs, max_id);
   const HistoryCarry wall_history = index_wall_history(store.walls, max_id);
+  const bool rolling = !store.pairs.roll.empty();  // kept only while some contact resists rolling
+  const HistoryCarry rolling_history = rolling ? index_rolling_history(store.pairs, max_id) : HistoryCarry{};
 
   CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan.r_max + L.skin));
   if (sort) sort_discs_by_cell(bins, d, c);
 
   const PairSearchResult search = search_pairs(L, bins, d);
   carry_pair_history(store.pairs, L, d, pair_history);
+  if (rolling) carry_rolling_history(store.pairs, rolling_history);
   prepare_damping(law, d, c, dt);  // the damping table is filled serially, read in parallel
   set_pair_damping(store.pairs, L, d, c, law, dt);
   set_chunk_hints(L, search, bins, sort);

@@ -105,13 +105,14 @@ void World::step_stages(const ThreadSplit* given) {
   std::exception_ptr hook_error;
   ThreadSplit fallback;
   // Named materials: each disc's friction from its material and its slip (contact/materials.hpp).
-  const double* mu_disc = nullptr;
+  DiscCoefficients disc_coefficients;
   if (discs_.has_materials) {
     disc_friction_.resize(discs_.size());
     for (std::size_t i = 0; i < discs_.size(); ++i)
       disc_friction_[i] = materials_.list[discs_.material[i]].friction_at(discs_.slip[i]);
-    mu_disc = disc_friction_.data();
+    disc_coefficients.friction = disc_friction_.data();
   }
+  prepare_rolling(disc_coefficients);
   // Weakening walls: each disc's coefficient from its slip as the step began (the pair stage adds
   // to it before the wall stage runs).
   WallSlip wall_slip;
@@ -133,7 +134,7 @@ void World::step_stages(const ThreadSplit* given) {
     }
     const ThreadSplit& split = whole_team ? cut : fallback;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
-    pair_forces_share(neighbors_, contacts_.pairs, discs_, law_, mu_disc, dt_, forces, split, t);
+    pair_forces_share(neighbors_, contacts_.pairs, discs_, law_, disc_coefficients, dt_, forces, split, t);
     wall_forces_share(contacts_.walls, discs_, walls_, law_, dt_, wall_slip, forces, split, t);
     // A body's members may lie in the next thread's stretch: their forces must be whole before
     // it gathers them, and their wall contacts read before it moves them.
@@ -163,6 +164,25 @@ void World::step_stages(const ThreadSplit* given) {
   }
   if (hook_error) std::rethrow_exception(hook_error);
   moved_ = Displacement{max2, not_finite}.distance();
+}
+
+bool World::resists_rolling() const {
+  return discs_.has_materials ? materials_.any_rolling() : law_.rolling_friction > 0;
+}
+
+void World::prepare_rolling(DiscCoefficients& disc) {
+  // The store keeps rolling histories exactly while some contact resists rolling: without, the
+  // pair loops are those of the thesis's law, bit for bit.
+  auto& roll = contacts_.pairs.roll;
+  if (!resists_rolling()) {
+    roll.clear();
+    return;
+  }
+  if (roll.empty()) roll.assign(contacts_.pairs.size(), 0.0);  // resisting from this step on
+  if (!discs_.has_materials) return;
+  disc_rolling_.resize(discs_.size());
+  for (std::size_t i = 0; i < discs_.size(); ++i) disc_rolling_[i] = materials_.list[discs_.material[i]].rolling_friction;
+  disc.rolling = disc_rolling_.data();
 }
 
 const ThreadSplit& World::thread_cut(int threads) {

@@ -275,6 +275,10 @@ class World {
   // own force and integration phases: the list rebuilt if stale; the walls moved, the clock on.
   void rebuild_if_stale();
   void finish_step();
+  // Rolling resistance in this step: the store's rolling histories kept or dropped, and in a world
+  // of materials each disc's coefficient (docs/model.md "Rolling resistance").
+  bool resists_rolling() const;
+  void prepare_rolling(DiscCoefficients& disc);
 
   Discs discs_;
   Clusters clusters_;
@@ -288,6 +292,7 @@ class World {
   PairScratch scratch_;
   BondScratch bond_scratch_;
   std::vector<double> disc_friction_;       // each disc's friction in this step (a world of materials)
+  std::vector<double> disc_rolling_;        // each disc's rolling resistance mu_r (a world of materials)
   std::vector<double> slip_at_step_start_;  // each disc's slip as the step began (weakening walls)
   double moved_ = 0;  // from integration
   double dt_ = 1e-3;

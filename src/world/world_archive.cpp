@@ -94,6 +94,8 @@ void save_world(ArchiveWriter& out, World& w) {
 
   auto& L = w.neighbors_;
   for_each_contact_array(L, w.contacts_, [&](std::string_view name, auto& v) { out.put(key("nl", name), v); });
+  // Rolling histories only while some contact resists rolling: other checkpoints stay as they were.
+  if (!w.contacts_.pairs.roll.empty()) out.put("nl.roll", w.contacts_.pairs.roll);
   out.put_scalar("nl.builds", L.builds);
   out.put_scalar<std::uint8_t>("nl.valid", L.valid ? 1 : 0);
   out.put_scalar("nl.skin", L.skin);
@@ -162,6 +164,8 @@ void load_world(const ArchiveReader& in, World& w) {
 
   auto& L = w.neighbors_;
   for_each_contact_array(L, w.contacts_, [&](std::string_view name, auto& v) { in.get(key("nl", name), v); });
+  if (in.has("nl.roll")) in.get("nl.roll", w.contacts_.pairs.roll);
+  else w.contacts_.pairs.roll.clear();
   L.builds = in.get_scalar<std::uint64_t>("nl.builds");
   L.valid = in.get_scalar<std::uint8_t>("nl.valid") != 0;
   L.skin = in.get_scalar<double>("nl.skin");

@@ -179,6 +179,13 @@ class WedgeChartsTest(unittest.TestCase):
                                                  contact=dict(default["material_keys"]["contact"], mu=0.5)))
         run = wc.make_charts([self.run_dir], self.out, calibration=other)["runs"][0]["critical_taper"]
         self.assertEqual(run["calibration"], "calibrated default material")
+        # A key that came after the shipped calibration was recorded (rolling resistance): at its
+        # default the calibration still fits, at another value it does not.
+        with open(os.path.join(self.run_dir, "config.toml"), "w") as f:
+            f.write(config_text.replace("\nrolling_friction = 0.0\n", "\nrolling_friction = 0.2\n", 1))
+        run = wc.make_charts([self.run_dir], self.out)["runs"][0]["critical_taper"]
+        self.assertIsNone(run["calibration"])
+        self.assertIn("contact.rolling_friction", run["why"])
 
     def test_topography_reads_complete_outputs_only(self):
         if h5py is None:

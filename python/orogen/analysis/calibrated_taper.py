@@ -25,10 +25,14 @@ from .surface import critical_taper_deg
 # and how the packing settles (the seed, the walls and the time step do not).
 MATERIAL_KEYS = {
     "contact": ("mu", "kn", "ks_ratio", "normal_force", "damping", "damping_rate", "restitution",
-                "tangential_damping_ratio"),
+                "tangential_damping_ratio", "rolling_friction", "rolling_stiffness"),
     "particles": ("packing", "d_min", "d_max", "placement"),
     "settle": ("mu",),
 }
+
+# Keys that came after calibrations were first recorded, with their defaults: a calibration that
+# does not record one was made at its default.
+LATER_KEYS = {"contact": {"rolling_friction": 0.0, "rolling_stiffness": 1.0}, "material": {"rolling_friction": 0.0}}
 
 DEFAULT_CALIBRATION = os.path.join(os.path.dirname(__file__), "default_calibration.json")
 
@@ -65,8 +69,10 @@ def calibration_for(config, explicit=None):
     mine = material_keys(config, material)
     if material and mine["material"] is None:
         return None, "the run has no material %r" % material
-    differ = ["%s.%s" % (s, k) for s in MATERIAL_KEYS for k in MATERIAL_KEYS[s] if keys[s].get(k) != mine[s].get(k)]
-    if keys.get("material") != mine["material"]:
+    recorded = {s: dict(LATER_KEYS.get(s, {}), **keys[s]) for s in MATERIAL_KEYS}
+    differ = ["%s.%s" % (s, k) for s in MATERIAL_KEYS for k in MATERIAL_KEYS[s] if recorded[s].get(k) != mine[s].get(k)]
+    recorded_material = dict(LATER_KEYS["material"], **keys["material"]) if keys.get("material") else None
+    if recorded_material != mine["material"]:
         differ.append("materials.%s" % material if material else
                       "[materials] (the calibration is of the default material, the run names its own)")
     if differ:
