@@ -60,6 +60,7 @@ inline std::vector<double> state_of(const World& w) {
   for (const auto* a : {&c.x, &c.y, &c.theta, &c.vx, &c.vy, &c.omega, &c.rot_c, &c.rot_s})
     s.insert(s.end(), a->begin(), a->end());
   s.insert(s.end(), w.contacts().pairs.xi.begin(), w.contacts().pairs.xi.end());
+  s.insert(s.end(), w.contacts().pairs.roll.begin(), w.contacts().pairs.roll.end());  // empty without rolling resistance
   s.insert(s.end(), w.contacts().walls.xi.begin(), w.contacts().walls.xi.end());
   for (const auto t : w.contacts().walls.touching) s.push_back(t);
   for (const auto& wall : w.walls()) s.insert(s.end(), {wall.ax, wall.ay, wall.bx, wall.by});

@@ -41,6 +41,15 @@ TEST(EmulatedRanks, AnyNumberOfRanksStepsAsOneProcess) {
   for (int ranks : {1, 2, 3, 4}) expect_same_run(start, ranks, {}, 300, 25);
 }
 
+// Rolling resistance (docs/model.md): a second history per pair, owned and gathered as the first.
+TEST(EmulatedRanks, RollingResistanceStepsAsOneProcess) {
+  World start = mixed_heap();
+  ContactLaw law = start.law();
+  law.rolling_friction = 0.3;
+  start.set_contact_law(law);
+  for (int ranks : {2, 3}) expect_same_run(start, ranks, lopsided_cut, 300, 25);
+}
+
 TEST(EmulatedRanks, LopsidedCutsStepAsOneProcess) {
   const World start = mixed_heap();
   for (int ranks : {2, 3}) expect_same_run(start, ranks, lopsided_cut, 300, 25);

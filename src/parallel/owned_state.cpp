@@ -24,9 +24,12 @@ void for_each_owned_value(RankAccess& a, const ExchangePlan& plan, int owner, F&
   const auto& starts = a.neighbors.chunk_start;
   if (!starts.empty()) {  // chunks are contiguous ranges of pairs
     auto& xi = a.contacts.pairs.xi;
+    auto& roll = a.contacts.pairs.roll;  // empty unless some contact resists rolling
     for (std::size_t p = starts[static_cast<std::size_t>(plan.cut.chunk[r])];
-         p < starts[static_cast<std::size_t>(plan.cut.chunk[r + 1])]; ++p)
+         p < starts[static_cast<std::size_t>(plan.cut.chunk[r + 1])]; ++p) {
       f(xi[p]);
+      if (!roll.empty()) f(roll[p]);
+    }
   }
   WallContacts& wc = a.contacts.walls;
   for (std::size_t k = 0; k < wc.size(); ++k) {

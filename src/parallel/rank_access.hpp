@@ -24,6 +24,12 @@ struct RankAccess {
         neighbors(w.neighbors_), contacts(w.contacts_), forces(w.scratch_.forces), moved(w.moved_), dt(w.dt_) {}
 
   void rebuild_if_stale() { world.rebuild_if_stale(); }
+  // The store's rolling histories kept or dropped for this step, as World::step_stages does (a
+  // world over ranks has no materials: the law's coefficient for every pair).
+  void prepare_rolling() {
+    DiscCoefficients uniform;
+    world.prepare_rolling(uniform);
+  }
   void finish_step() { world.finish_step(); }
 };
 

@@ -35,7 +35,6 @@ void check_steppable_over_ranks(const World& world) {
   const char* missing = nullptr;
   if (!world.bonds().id_a.empty()) missing = "bonds";
   else if (world.discs().has_materials) missing = "named materials (per-disc friction and slip)";
-  else if (world.law().rolling_friction > 0) missing = "rolling resistance (contact.rolling_friction)";
   else if (!world.hooks().only_pins(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration) ||
            world.hooks().pins().size() > 1)
     missing = "hooks inside the step (other than one pin: the constant-velocity base's)";
@@ -162,6 +161,7 @@ void RankStep::take_build() {
     ++serial_.builds;
   }
   if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds) make_plan();
+  access_.prepare_rolling();
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
 }
 
