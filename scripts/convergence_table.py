@@ -2,7 +2,9 @@
 """Issue 38 point 3, convergence with resolution (docs/validity.md, docs/wedge-evidence.md): the
 same wedge at several h0, one `orogen ensemble` folder each (examples/ensembles/main_convergence_h*.toml),
 side by side. Per h0, over the members (mean +- standard deviation): the wedge at the last
-output (H, the fronts Dp and Dr, the late tapers), the power-law exponent b of the mean H, Dp
+output (H, the fronts Dp and Dr), the tapers over the last third of the run (the surface fits
+alpha_fit, beta_fit, the theory's; the chords alpha, beta from the fronts to the peak, the
+ensemble's alpha_late, beta_late), the power-law exponent b of the mean H, Dp
 and Dr over S > 2 (orogen.stats' fit, once with the offset "none" and once "auto": the two
 conventions of Table 5.1), the pro front's step-out spacing (orogen.stats' cycles), and the
 pro forethrusts of the last quarter of the run (orogen.analysis.faults: their spacing along the
@@ -63,6 +65,13 @@ def late_forethrusts(member):
             float(np.median(dips)) if dips else math.nan)
 
 
+def late_fits(member):
+    """Mean surface-fit tapers (alpha_fit, beta_fit) over the last third of the member's run."""
+    cols, _ = read_table(os.path.join(member, "series.csv"))
+    late = cols["S"] >= cols["S"][-1] * 2 / 3
+    return tuple(float(np.nanmean(cols[k][late])) for k in ("alpha_fit", "beta_fit"))
+
+
 def exponents(folder):
     """b of the mean H, Dp, Dr (offset none, auto) from the ensemble's aggregate/mean_fronts.csv."""
     cols, _ = read_table(os.path.join(folder, "aggregate", "mean_fronts.csv"))
@@ -81,6 +90,8 @@ def summary(folder):
     col = {k: [number(r[k]) for r in done] for k in ("final_S", "final_H", "final_Dp", "final_Dr", "alpha_late",
                                                      "beta_late", "pro_spacing")}
     fore = [late_forethrusts(m) for m in members]
+    fits = [late_fits(m) for m in members]
+    col["alpha_fit"], col["beta_fit"] = [f[0] for f in fits], [f[1] for f in fits]
     return dict(h0=h0, n=len(done), S=max(col["final_S"]), b=exponents(folder), col=col,
                 spacing=[f[0] for f in fore], dip=[f[1] for f in fore], picked=sum(math.isfinite(f[0]) for f in fore))
 
@@ -90,14 +101,15 @@ def main(folders):
         print(__doc__)
         return 2
     table = sorted((summary(f) for f in folders), key=lambda t: t["h0"])
-    print("| h0 [d] | members | S | H [h0] | Dp [h0] | Dr [h0] | alpha late [deg] | beta late [deg] "
+    print("| h0 [d] | members | S | H [h0] | Dp [h0] | Dr [h0] | alpha: fit / chord [deg] | beta: fit / chord [deg] "
           "| b of H (none / auto) | b of Dp (none / auto) | b of Dr (none / auto) | pro step-out spacing in S [h0] "
           "| pro forethrust spacing [h0] | pro forethrust dip [deg] |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for t in table:
         c, b = t["col"], t["b"]
         print(f"| {t['h0']:g} | {t['n']} | {t['S']:.2f} | {mean_sd(c['final_H'])} | {mean_sd(c['final_Dp'], 1)} "
-              f"| {mean_sd(c['final_Dr'], 1)} | {mean_sd(c['alpha_late'], 1)} | {mean_sd(c['beta_late'], 1)} "
+              f"| {mean_sd(c['final_Dr'], 1)} | {mean_sd(c['alpha_fit'], 1)} / {mean_sd(c['alpha_late'], 1)} "
+              f"| {mean_sd(c['beta_fit'], 1)} / {mean_sd(c['beta_late'], 1)} "
               f"| {b['H', 'none']:.2f} / {b['H', 'auto']:.2f} | {b['Dp', 'none']:.2f} / {b['Dp', 'auto']:.2f} "
               f"| {b['Dr', 'none']:.2f} / {b['Dr', 'auto']:.2f} | {mean_sd(c['pro_spacing'])} "
               f"| {mean_sd(t['spacing'])} ({t['picked']} picked) | {mean_sd(t['dip'], 0)} |")
