@@ -1,6 +1,6 @@
 // The contact law is written once (contact/law_kernels.hpp, contact/normal_laws.hpp); every
-// user of it must get bitwise the same forces: the vectorised block kernel and one pair
-// through the kernel, the pair and wall force stages of a step, and the contact output
+// user of it must get bitwise the same forces: the vectorised block kernels (with rolling
+// resistance too) and one pair through the kernel, the pair and wall force stages of a step, and the contact output
 // (analysis/contact_forces.cpp), for every registered normal law; the biaxial servo's elastic
 // wall force is the normal force without the dashpot.
 #include <gtest/gtest.h>
@@ -24,12 +24,12 @@ TEST(OneContactLaw, BlockKernelMatchesOnePairThroughTheKernel) {
   for (std::size_t law = 0; law < kNormalLawCount; ++law) {
     with_normal_law(law, [&](auto normal) {
       using Normal = decltype(normal);
-      const double kn = 2e4, ks = 2e4 * 2 / 7, mu = 0.5, dt = 5e-4;
+      const double kn = 2e4, ks = 2e4 * 2 / 7, mu = 0.5, dt = 5e-4, kr_per_r2 = ks;
       Random rng(42);
       ContactBlock b;
       int touching = 0, slipping = 0;
       for (int round = 0; round < 200; ++round) {
-        double xi[kContactBlock];
+        double xi[kContactBlock], roll[kContactBlock];
         for (int k = 0; k < kContactBlock; ++k) {
           b.ri[k] = rng.uniform(0.35, 0.5);
           b.rj[k] = rng.uniform(0.35, 0.5);
@@ -45,10 +45,13 @@ TEST(OneContactLaw, BlockKernelMatchesOnePairThroughTheKernel) {
           b.gs[k] = 0.5 * b.gn[k];
           b.xi[k] = xi[k] = rng.uniform(-0.01, 0.01);  // large ones slip at once
           b.mu[k] = mu;
+          b.mur[k] = rng.uniform(0, 0.5);
+          b.roll[k] = roll[k] = rng.uniform(-0.02, 0.02);
         }
-        ContactBlock with_materials = b;
+        ContactBlock with_materials = b, with_rolling = b;
         contact_forces_block<Normal>(b, kContactBlock, kn, ks, mu, dt);
         contact_forces_block_materials<Normal>(with_materials, kContactBlock, kn, ks, dt);
+        contact_forces_block_rolling<Normal>(with_rolling, kContactBlock, kn, ks, kr_per_r2, dt);
         for (int k = 0; k < kContactBlock; ++k) {
           const ContactLane f = contact_lane<Normal>(b.dx[k], b.dy[k], b.ri[k], b.rj[k], b.dvx[k], b.dvy[k], b.wi[k],
                                                      b.wj[k], b.gn[k], b.gs[k], xi[k], kn, ks, mu, dt);
@@ -62,6 +65,13 @@ TEST(OneContactLaw, BlockKernelMatchesOnePairThroughTheKernel) {
           EXPECT_TRUE(same_bits(f.fx, with_materials.fx[k]));
           EXPECT_TRUE(same_bits(f.ft, with_materials.ft[k]));
           EXPECT_TRUE(same_bits(f.slip, with_materials.slip[k]));
+          // The rolling block: the same contact, and the rolling lane of the pair.
+          const RollingLane r = rolling_lane(f.touching, b.ri[k], b.rj[k], b.wi[k], b.wj[k], roll[k],
+                                             Normal::load(f.fn), kr_per_r2, with_rolling.mur[k], dt);
+          EXPECT_TRUE(same_bits(f.fx, with_rolling.fx[k]));
+          EXPECT_TRUE(same_bits(f.ft, with_rolling.ft[k]));
+          EXPECT_TRUE(same_bits(r.moment, with_rolling.moment[k]));
+          EXPECT_TRUE(same_bits(r.roll, with_rolling.roll[k]));
           if (!f.touching) continue;
           ++touching;
           slipping += f.at_limit;
