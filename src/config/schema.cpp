@@ -163,8 +163,9 @@ const std::vector<KeySpec>& schema() {
            "mu_r r_eff F_n (docs/model.md); 0 = none, the thesis's law; the default of every material's "
            "rolling_friction [-]"),
       real("contact.rolling_stiffness", 1.0, gt(0), le(2),
-           "stiffness of the rolling spring in units of k_s r_eff^2; at most 2 keeps its rotation no faster than "
-           "the normal spring's vibration, so the time step bound holds [-]"),
+           "stiffness of the rolling spring in units of k_s r_eff^2; at most 2 keeps the rolling spring within twice "
+           "the normal spring's frequency for any two discs, so the time step (a tenth of the normal period) stays "
+           "stable (docs/model.md) [-]"),
 
       real("time.dt", 0.0, ge(0), none,
            "time step, 0 = computed from stiffness and smallest mass [sqrt(d/g)]"),

@@ -29,7 +29,7 @@ struct ContactLaw {
   // pair's relative rotation, its moment capped at rolling_friction r_eff F_n. 0: none (the
   // thesis's law; the pair loops then keep no rolling history at all).
   double rolling_friction = 0.0;   // mu_r
-  double rolling_stiffness = 1.0;  // k_r in units of k_s r_eff^2
+  double rolling_stiffness = 1.0;  // k_r in units of k_s r_eff^2 (at most 2: docs/model.md, the time step)
 
   // Normal dashpot coefficient for a pair of effective mass m_eff integrated with step dt.
   // For Restitution the damping ratio is calibrated to the discrete integrator (see
