@@ -222,14 +222,17 @@ def material_colours(depth0, material, band=1.0 / BANDS_PER_LAYER):
 
 
 def material_legend(cax, names):
-    """The materials' key in the colour bar's place: one cell per material, light and dark."""
-    cells = np.zeros((len(names), 2, 4))
+    """The materials' key in the colour bar's place: one cell per material, light and dark, and
+    the red marker bed below them (it crosses every material)."""
+    rows = len(names) + 1
+    cells = np.zeros((rows, 2, 4))
     for k in range(len(names)):
         for c in range(2):
             cells[k, c] = matplotlib.colors.to_rgba(MATERIAL_COLOURS[k % len(MATERIAL_COLOURS)][c])
-    cax.imshow(cells, aspect="auto", extent=(0, 2, len(names), 0), interpolation="nearest")
+    cells[-1, :] = matplotlib.colors.to_rgba(MARKER_COLOUR)
+    cax.imshow(cells, aspect="auto", extent=(0, 2, rows, 0), interpolation="nearest")
     cax.set_xticks([])
-    cax.set_yticks([k + 0.5 for k in range(len(names))], names, fontsize=8)
+    cax.set_yticks([k + 0.5 for k in range(rows)], list(names) + ["marker bed"], fontsize=8)
     cax.yaxis.tick_right()
     cax.yaxis.set_label_position("right")
     cax.set_ylabel("material")
@@ -286,7 +289,7 @@ def fixed_scale(values, percentile):
 
 def figure_for(view, width_px):
     """A figure and its axes sized so that x and y are to scale times the exaggeration."""
-    margin_l, margin_r, margin_t, margin_b = 0.9, 1.35, 0.6, 0.6  # inches: labels, colour bar
+    margin_l, margin_r, margin_t, margin_b = 0.9, 1.85, 0.6, 0.6  # inches: labels, colour bar and its labels (a material's name)
     width_in = width_px / DPI
     plot_w = width_in - margin_l - margin_r
     span_x = view["x_max"] - view["x_min"]
