@@ -24,6 +24,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+from orogen.analysis.faults import late_faults  # noqa: E402
 from orogen.results import open_run  # noqa: E402
 from orogen.tables import read_rows, read_table  # noqa: E402
 
@@ -51,11 +52,11 @@ def row(run):
     s_end = cols["S"][last]
     late = cols["S"] >= 0.75 * s_end
     faults, _ = read_rows(os.path.join(run, "faults.csv"))
-    late_faults = [f for f in faults if float(f["S"]) >= 0.75 * s_end and f["side"] == "pro"]
+    late_pro = late_faults(faults, s_end)
     outputs = {f["output"] for f in faults if float(f["S"]) >= 0.75 * s_end}
     n_out = max(1, len({int(o) for o in outputs}))
-    fore = [f for f in late_faults if f["kind"] == "forethrust"]
-    back = [f for f in late_faults if f["kind"] == "backthrust"]
+    fore = [f for f in late_pro if f["kind"] == "forethrust"]
+    back = [f for f in late_pro if f["kind"] == "backthrust"]
     spacing = [float(f["spacing"]) for f in fore if f["spacing"] not in ("", "nan")]
     spacing = [v for v in spacing if math.isfinite(v)]
 

@@ -25,8 +25,9 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
 from orogen import stats  # noqa: E402
+from orogen.analysis.faults import late_faults  # noqa: E402
 from orogen.results import open_run  # noqa: E402
-from orogen.tables import read_rows, read_table  # noqa: E402
+from orogen.tables import read_rows, read_table, to_float  # noqa: E402
 
 S_MIN = 2.0  # the fits start here, as the ensembles' [ensemble.stats] s_min
 
@@ -40,13 +41,6 @@ def mean_sd(values, digits=2):
     return f"{v.mean():.{digits}f} +- {v.std(ddof=1):.{digits}f}"
 
 
-def number(text):
-    try:
-        return float(text)
-    except ValueError:
-        return math.nan
-
-
 def late_forethrusts(member):
     """(spacing, dip) of the pro forethrusts over the last quarter of the member's run, each the
     median over those faults; NaN without faults.csv."""
@@ -56,11 +50,10 @@ def late_forethrusts(member):
     faults, _ = read_rows(path)
     if not faults:
         return math.nan, math.nan
-    s_end = max(number(f["S"]) for f in faults)
-    fore = [f for f in faults if number(f["S"]) >= 0.75 * s_end and f["side"] == "pro" and f["kind"] == "forethrust"]
-    spacing = [number(f["spacing"]) for f in fore]
+    fore = [f for f in late_faults(faults, max(to_float(f["S"]) for f in faults)) if f["kind"] == "forethrust"]
+    spacing = [to_float(f["spacing"]) for f in fore]
     spacing = [v for v in spacing if math.isfinite(v)]
-    dips = [number(f["dip_deg"]) for f in fore]
+    dips = [to_float(f["dip_deg"]) for f in fore]
     return (float(np.median(spacing)) if spacing else math.nan,
             float(np.median(dips)) if dips else math.nan)
 
@@ -87,7 +80,7 @@ def summary(folder):
     done = [r for r in rows if r["exit_status"] == "0"]
     members = [os.path.join(folder, "members", r["name"]) for r in done]
     h0 = float(open_run(members[0]).config["layer"]["thickness"])
-    col = {k: [number(r[k]) for r in done] for k in ("final_S", "final_H", "final_Dp", "final_Dr", "alpha_late",
+    col = {k: [to_float(r[k]) for r in done] for k in ("final_S", "final_H", "final_Dp", "final_Dr", "alpha_late",
                                                      "beta_late", "pro_spacing")}
     fore = [late_forethrusts(m) for m in members]
     fits = [late_fits(m) for m in members]

@@ -50,9 +50,7 @@ struct MaterialFriction {
 // Resisting: contact.rolling_friction for every pair (with UniformFriction), or in a world of
 // materials the weaker of the two discs' coefficients (with MaterialFriction).
 struct NoRolling {
-  static constexpr bool kOn = false;
-  double kr_per_r2 = 0;
-  double pair(std::uint32_t, std::uint32_t) const { return 0; }
+  static constexpr bool kOn = false;  // the loops read nothing else of it
 };
 struct UniformRolling {
   static constexpr bool kOn = true;
@@ -63,8 +61,11 @@ struct UniformRolling {
 struct MaterialRolling {
   static constexpr bool kOn = true;
   double kr_per_r2;
-  const double* __restrict mur_disc;
-  double pair(std::uint32_t i, std::uint32_t j) const { return pair_rolling_friction(mur_disc[i], mur_disc[j]); }
+  const std::uint8_t* __restrict material;  // each disc's
+  const double* __restrict mur;             // each material's
+  double pair(std::uint32_t i, std::uint32_t j) const {
+    return pair_rolling_friction(mur[material[i]], mur[material[j]]);
+  }
 };
 
 // Gathers the touching pairs among [p0, p0 + count) into the block (their pair numbers in
@@ -225,7 +226,7 @@ void with_law_and_friction(const ContactLaw& law, const DiscCoefficients& disc, 
       if (!rolling)
         run(normal, friction, NoRolling{});
       else if constexpr (std::decay_t<decltype(friction)>::kTracksSlip)
-        run(normal, friction, MaterialRolling{kr_per_r2, disc.rolling});
+        run(normal, friction, MaterialRolling{kr_per_r2, disc.material, disc.rolling});
       else
         run(normal, friction, UniformRolling{kr_per_r2, law.rolling_friction});
     };

@@ -23,13 +23,15 @@ struct PairScratch {
   std::uint64_t split_build = ~std::uint64_t{0};  // the list build the cut was made for
 };
 
-// Each disc's coefficients of this step in a world of named materials; nullptr: the law's for
-// every pair. `friction`: a pair slides at the weaker of its two, and the slip of each contact on
-// the Coulomb limit is added to both discs' Discs::slip. `rolling`: a pair resists rolling with
-// the weaker of its two (read only while the store keeps rolling histories, PairContacts::roll;
-// with none, no contact resists rolling).
+// The coefficients of this step in a world of named materials; nullptr: the law's for every
+// pair. `friction`, by disc: a pair slides at the weaker of its two, and the slip of each contact
+// on the Coulomb limit is added to both discs' Discs::slip. `rolling`, by material (`material`:
+// each disc's): a pair resists rolling with the weaker of its two discs' materials (read only
+// while the store keeps rolling histories, PairContacts::roll; with none, no contact resists
+// rolling).
 struct DiscCoefficients {
   const double* friction = nullptr;
+  const std::uint8_t* material = nullptr;
   const double* rolling = nullptr;
 };
 

@@ -14,15 +14,9 @@ std::int64_t max_stored_id(const ContactStore& s) {
   return max_id;
 }
 
-HistoryCarry index_pair_history(const PairContacts& pairs, std::int64_t max_id) {
+HistoryCarry index_pair_history(const PairContacts& pairs, std::span<const double> history, std::int64_t max_id) {
   HistoryCarry h;
-  h.index(pairs.id_first, pairs.id_second, pairs.xi, max_id);
-  return h;
-}
-
-HistoryCarry index_rolling_history(const PairContacts& pairs, std::int64_t max_id) {
-  HistoryCarry h;
-  h.index(pairs.id_first, pairs.id_second, pairs.roll, max_id);
+  h.index(pairs.id_first, pairs.id_second, history, max_id);
   return h;
 }
 

@@ -23,10 +23,10 @@ BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clus
   }
   // Index the old histories by stable ids before indices change.
   const std::int64_t max_id = std::max(scan.max_id, max_stored_id(store));
-  const HistoryCarry pair_history = index_pair_history(store.pairs, max_id);
+  const HistoryCarry pair_history = index_pair_history(store.pairs, store.pairs.xi, max_id);
   const HistoryCarry wall_history = index_wall_history(store.walls, max_id);
   const bool rolling = !store.pairs.roll.empty();  // kept only while some contact resists rolling
-  const HistoryCarry rolling_history = rolling ? index_rolling_history(store.pairs, max_id) : HistoryCarry{};
+  const HistoryCarry rolling_history = rolling ? index_pair_history(store.pairs, store.pairs.roll, max_id) : HistoryCarry{};
 
   CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan.r_max + L.skin));
   if (sort) sort_discs_by_cell(bins, d, c);

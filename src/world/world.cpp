@@ -180,9 +180,12 @@ void World::prepare_rolling(DiscCoefficients& disc) {
   }
   if (roll.empty()) roll.assign(contacts_.pairs.size(), 0.0);  // resisting from this step on
   if (!discs_.has_materials) return;
-  disc_rolling_.resize(discs_.size());
-  for (std::size_t i = 0; i < discs_.size(); ++i) disc_rolling_[i] = materials_.list[discs_.material[i]].rolling_friction;
-  disc.rolling = disc_rolling_.data();
+  // A material's coefficient does not change with slip: the loops read it through each disc's
+  // material, from this table of a few entries.
+  material_rolling_.resize(materials_.size());
+  for (std::size_t m = 0; m < materials_.size(); ++m) material_rolling_[m] = materials_.list[m].rolling_friction;
+  disc.material = discs_.material.data();
+  disc.rolling = material_rolling_.data();
 }
 
 const ThreadSplit& World::thread_cut(int threads) {

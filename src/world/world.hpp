@@ -292,7 +292,7 @@ class World {
   PairScratch scratch_;
   BondScratch bond_scratch_;
   std::vector<double> disc_friction_;       // each disc's friction in this step (a world of materials)
-  std::vector<double> disc_rolling_;        // each disc's rolling resistance mu_r (a world of materials)
+  std::vector<double> material_rolling_;    // each material's rolling resistance mu_r (a world of materials)
   std::vector<double> slip_at_step_start_;  // each disc's slip as the step began (weakening walls)
   double moved_ = 0;  // from integration
   double dt_ = 1e-3;

@@ -242,6 +242,13 @@ def spacings(faults):
     return out
 
 
+def late_faults(rows, s_end, side="pro", share=0.25):
+    """The rows of a faults.csv (dicts of text, as orogen.tables.read_rows gives them) of one side
+    over the last `share` of a run that ends at S (or shortening) `s_end`: the faults the cohesion
+    and convergence tables read."""
+    return [f for f in rows if float(f["S"]) >= (1 - share) * s_end and f["side"] == side]
+
+
 COLUMNS = [("output", "output number [-]"), ("S", "convergence of the output [-]"),
            ("side", "pro or retro: the side of the S-point the fault's centre is on [-]"),
            ("kind", "forethrust (deepens towards the S-point) or backthrust [-]"),
