@@ -50,6 +50,37 @@ inline World mixed_heap(int rows = 6, int cols = 50, int settle_steps = 5000) {
   return w;
 }
 
+// The heap as a layered crust (docs/materials.md): the left half a bonded rock whose friction
+// weakens with slip and resists rolling, the right half a weak material, the base weakening;
+// bonds weak enough that some break as the wall pushes in.
+inline World layered_heap() {
+  World w = mixed_heap();
+  Material rock;
+  rock.name = "rock";
+  rock.friction = 0.6;
+  rock.friction_residual = 0.3;
+  rock.weakening_distance = 0.02;
+  rock.rolling_friction = 0.1;
+  rock.bond.tensile_strength = 8;
+  rock.bond.shear_strength = 2 * rock.bond.tensile_strength;
+  rock.bond.strength_scatter = 0.5;
+  Material weak;
+  weak.name = "weak";
+  weak.friction = weak.friction_residual = 0.2;
+  MaterialTable table;
+  table.list = {rock, weak};
+  w.set_materials(table);
+  w.enable_materials();
+  const double middle = 0.5 * (w.walls()[0].ax + w.walls()[0].bx);
+  for (std::size_t i = 0; i < w.discs().size(); ++i) inside(w).discs.material[i] = w.discs().x[i] < middle ? 0 : 1;
+  Wall& base = inside(w).walls[0];
+  base.weakens = true;
+  base.mu_residual = 0.2;
+  base.weakening_distance = 0.05;
+  w.make_bonds(0, w.discs().size(), 5);
+  return w;
+}
+
 // Everything a step changes, in one array of doubles: equal arrays are equal bits.
 inline std::vector<double> state_of(const World& w) {
   std::vector<double> s;
@@ -64,6 +95,13 @@ inline std::vector<double> state_of(const World& w) {
   s.insert(s.end(), w.contacts().walls.xi.begin(), w.contacts().walls.xi.end());
   for (const auto t : w.contacts().walls.touching) s.push_back(t);
   for (const auto& wall : w.walls()) s.insert(s.end(), {wall.ax, wall.ay, wall.bx, wall.by});
+  s.insert(s.end(), d.slip.begin(), d.slip.end());  // empty without named materials
+  const Bonds& b = w.bonds();
+  for (const auto* a : {&b.fn, &b.fs, &b.moment}) s.insert(s.end(), a->begin(), a->end());
+  for (const auto id : b.id_a) s.push_back(static_cast<double>(id));  // the bonds left, in their order
+  for (const auto& k : b.breaks)
+    s.insert(s.end(), {static_cast<double>(k.step), k.time, static_cast<double>(k.id_a), static_cast<double>(k.id_b),
+                       k.x, k.y, static_cast<double>(k.mode)});
   s.insert(s.end(), {w.moved(), w.time(), static_cast<double>(w.step()), static_cast<double>(w.neighbors().builds)});
   return s;
 }

@@ -50,6 +50,22 @@ TEST(EmulatedRanks, RollingResistanceStepsAsOneProcess) {
   for (int ranks : {2, 3}) expect_same_run(start, ranks, lopsided_cut, 300, 25);
 }
 
+// A layered crust (named materials, bonds, a weakening base): a disc's slip travels as its
+// motion and its sums do, a bond across a cut is stepped by both ranks, breaks reach every copy.
+TEST(EmulatedRanks, LayeredCrustStepsAsOneProcess) {
+  const World start = testing::layered_heap();
+  const std::size_t bonds = start.bonds().size();
+  ASSERT_GT(bonds, 100u);
+  World one = start;
+  for (int s = 0; s < 300; ++s) one.advance();
+  const std::size_t broken = one.bonds().breaks.size();
+  std::cout << bonds << " bonds, " << broken << " broken in 300 steps\n";
+  EXPECT_GT(broken, 0u) << "no bond broke: the breaks' exchange is not tested";
+  EXPECT_LT(broken, bonds / 2) << "most bonds broke: the bonds' forces are hardly tested";
+  for (int ranks : {2, 3}) expect_same_run(start, ranks, {}, 300, 25);
+  for (int ranks : {2, 3}) expect_same_run(start, ranks, lopsided_cut, 300, 25);
+}
+
 TEST(EmulatedRanks, LopsidedCutsStepAsOneProcess) {
   const World start = mixed_heap();
   for (int ranks : {2, 3}) expect_same_run(start, ranks, lopsided_cut, 300, 25);
@@ -86,9 +102,6 @@ TEST(EmulatedRanks, EachExchangeLeftOutChangesTheResult) {
 }
 
 TEST(EmulatedRanks, RefusesWhatItDoesNotRunYet) {
-  World with_materials = mixed_heap(2, 10, 10);
-  with_materials.enable_materials();
-  EXPECT_THROW(EmulatedRanks(with_materials, 2), std::invalid_argument);
   World with_hook = mixed_heap(2, 10, 10);
   with_hook.hooks().add(Stage::AfterIntegration, "test.hook", [](World&) {});
   EXPECT_THROW(EmulatedRanks(with_hook, 2), std::invalid_argument);

@@ -13,19 +13,29 @@ void add_bond(Bonds& bonds, std::int64_t id_a, std::int64_t id_b, std::uint32_t 
   bonds.fn.push_back(0); bonds.fs.push_back(0); bonds.moment.push_back(0);
 }
 
-void bond_forces_range(Bonds& B, const Discs& d, double dt, BondScratch& s, std::size_t begin, std::size_t end) {
-  const std::uint32_t* __restrict ia = B.a.data();
-  const std::uint32_t* __restrict ib = B.b.data();
-  const double *__restrict x = d.x.data(), *__restrict y = d.y.data(), *__restrict vx = d.vx.data(),
-               *__restrict vy = d.vy.data(), *__restrict w = d.omega.data(), *__restrict r = d.radius.data();
-  double *__restrict fn = B.fn.data(), *__restrict fs = B.fs.data(), *__restrict moment = B.moment.data();
-  const double *__restrict kn = B.kn.data(), *__restrict ks = B.ks.data(), *__restrict radius = B.radius.data(),
-               *__restrict tensile = B.tensile.data(), *__restrict shear = B.shear.data();
-  double *__restrict fx = s.fx.data(), *__restrict fy = s.fy.data(), *__restrict ta = s.torque_a.data(),
-         *__restrict tb = s.torque_b.data();
-  std::int64_t* __restrict broken = s.broken.data();
-#pragma omp simd
-  for (std::size_t k = begin; k < end; ++k) {
+namespace {
+
+// The arrays of a bond step, read once into unaliased pointers (the loops below are vector
+// loops over them), and bond k's step (bond_lane): its new state into the bonds, its forces
+// into the scratch.
+struct BondStep {
+  const std::uint32_t* __restrict ia;
+  const std::uint32_t* __restrict ib;
+  const double *__restrict x, *__restrict y, *__restrict vx, *__restrict vy, *__restrict w, *__restrict r;
+  double *__restrict fn, *__restrict fs, *__restrict moment;
+  const double *__restrict kn, *__restrict ks, *__restrict radius, *__restrict tensile, *__restrict shear;
+  double *__restrict fx, *__restrict fy, *__restrict ta, *__restrict tb;
+  std::int64_t* __restrict broken;
+  double dt;
+
+  BondStep(Bonds& B, const Discs& d, double dt_, BondScratch& s)
+      : ia(B.a.data()), ib(B.b.data()), x(d.x.data()), y(d.y.data()), vx(d.vx.data()), vy(d.vy.data()),
+        w(d.omega.data()), r(d.radius.data()), fn(B.fn.data()), fs(B.fs.data()), moment(B.moment.data()),
+        kn(B.kn.data()), ks(B.ks.data()), radius(B.radius.data()), tensile(B.tensile.data()),
+        shear(B.shear.data()), fx(s.fx.data()), fy(s.fy.data()), ta(s.torque_a.data()), tb(s.torque_b.data()),
+        broken(s.broken.data()), dt(dt_) {}
+
+  void operator()(std::size_t k) const {
     const auto a = ia[k], b = ib[k];
     const BondLane l = bond_lane(x[b] - x[a], y[b] - y[a], r[a], r[b], vx[b] - vx[a], vy[b] - vy[a], w[a], w[b], kn[k],
                                  ks[k], radius[k], tensile[k], shear[k], fn[k], fs[k], moment[k], dt);
@@ -33,6 +43,19 @@ void bond_forces_range(Bonds& B, const Discs& d, double dt, BondScratch& s, std:
     fx[k] = l.fx; fy[k] = l.fy; ta[k] = l.torque_a; tb[k] = l.torque_b;
     broken[k] = l.broken;
   }
+};
+
+}  // namespace
+
+void bond_forces_range(Bonds& B, const Discs& d, double dt, BondScratch& s, std::size_t begin, std::size_t end) {
+  const BondStep step(B, d, dt, s);
+#pragma omp simd
+  for (std::size_t k = begin; k < end; ++k) step(k);
+}
+
+void bond_forces_of(Bonds& B, const Discs& d, double dt, BondScratch& s, std::span<const std::uint32_t> which) {
+  const BondStep step(B, d, dt, s);
+  for (const std::uint32_t k : which) step(k);
 }
 
 void prepare_bond_scratch(Bonds& B, const Discs& d, std::uint64_t build, BondScratch& s) {

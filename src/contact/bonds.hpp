@@ -8,6 +8,7 @@
 // and gone; the contact goes on as any other.
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "particles/disc_force.hpp"
@@ -108,6 +109,10 @@ void prepare_bond_scratch(Bonds& bonds, const Discs& discs, std::uint64_t build,
 // the same bits.
 void bond_forces_range(Bonds& bonds, const Discs& discs, double dt, BondScratch& scratch, std::size_t begin,
                        std::size_t end);
+
+// The same for the acting bonds `which` alone (a rank's, in a step over ranks: parallel/rank_step.cpp).
+void bond_forces_of(Bonds& bonds, const Discs& discs, double dt, BondScratch& scratch,
+                    std::span<const std::uint32_t> which);
 
 // On one thread, in bond order (so the sums do not depend on the thread count): adds the
 // forces of the acting bonds that held onto the discs' sums, logs the broken ones (step, time)

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace orogen {
 namespace {
@@ -46,7 +48,7 @@ std::size_t Routes::total() const {
 }
 
 ExchangePlan make_exchange_plan(const NeighborList& L, const WallContacts& walls, const Discs& d, const Clusters& c,
-                                const ThreadSplit& cut) {
+                                const ThreadSplit& cut, const Bonds& bonds, std::size_t acting_bonds) {
   const int ranks = cut.threads();
   const std::size_t n = d.size();
   ExchangePlan plan;
@@ -62,17 +64,32 @@ ExchangePlan make_exchange_plan(const NeighborList& L, const WallContacts& walls
   plan.touches_wall.assign(n, 0);
   for (const std::uint32_t i : walls.disc) plan.touches_wall[i] = 1;
 
+  // A bond across a cut is stepped by both integrating ranks: each reads the other's disc.
+  std::vector<std::pair<std::uint32_t, std::int32_t>> bond_readers;  // (disc, rank), sorted below
+  for (std::size_t k = 0; k < acting_bonds; ++k) {
+    const std::uint32_t a = bonds.a[k], b = bonds.b[k];
+    if (plan.step_rank[a] == plan.step_rank[b]) continue;
+    bond_readers.emplace_back(a, plan.step_rank[b]);
+    bond_readers.emplace_back(b, plan.step_rank[a]);
+  }
+  std::sort(bond_readers.begin(), bond_readers.end());
+  auto next_bond_reader = bond_readers.begin();
+
   plan.ghosts = plan.partial_sums = plan.pair_sums = plan.whole_sums = Routes(ranks);
+  std::vector<std::int32_t> readers;
   for (std::size_t i = 0; i < n; ++i) {
     const auto disc = static_cast<std::uint32_t>(i);
     const std::int32_t even = plan.even_rank[i], odd = plan.odd_rank[i], wall = plan.wall_rank[i],
                        step = plan.step_rank[i];
-    // The ranks that read the disc's motion in their force phases; each needs it from the
-    // rank that moved it last (once, if it reads it twice).
-    const std::int32_t readers[3] = {even, odd, plan.touches_wall[i] ? wall : kNoRank};
-    for (int k = 0; k < 3; ++k) {
+    // The ranks that read the disc's motion in their force phases and bond steps; each needs it
+    // from the rank that moved it last (once, if it reads it twice).
+    readers.assign({even, odd, plan.touches_wall[i] ? wall : kNoRank});
+    for (; next_bond_reader != bond_readers.end() && next_bond_reader->first == disc; ++next_bond_reader)
+      readers.push_back(next_bond_reader->second);
+    for (std::size_t k = 0; k < readers.size(); ++k) {
       const std::int32_t q = readers[k];
-      const bool again = (k > 0 && readers[0] == q) || (k > 1 && readers[1] == q);
+      const bool again = std::find(readers.begin(), readers.begin() + static_cast<std::ptrdiff_t>(k), q) !=
+                         readers.begin() + static_cast<std::ptrdiff_t>(k);
       if (q != kNoRank && q != step && !again) plan.ghosts.add(step, q, disc);
     }
     // The running sum: even chunk, odd chunk, walls, integration. A rank with nothing to add

@@ -5,11 +5,13 @@
 // integration of the free discs of its disc range and of the bodies of its body range. A
 // disc's force sum must then travel, as a running sum, through the ranks that add to it in the
 // one-process order: its even chunk's rank, its odd chunk's, the wall owner (if it touches a
-// wall), the rank that integrates it. Made at each list build, from the list and the cut alone.
+// wall), the rank that integrates it, which adds its bonds' forces. Made at each list build
+// (and when bonds were made), from the list, the bonds and the cut alone.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "contact/bonds.hpp"
 #include "contact/contact_store.hpp"
 #include "contact/neighbor_list.hpp"
 #include "contact/thread_split.hpp"
@@ -44,16 +46,18 @@ struct ExchangePlan {
   std::vector<std::int32_t> even_rank, odd_rank, wall_rank, step_rank;
   std::vector<std::uint8_t> touches_wall;
   // Per step, in this order:
-  Routes ghosts;        // position, velocity, spin (5 doubles) of the discs a rank reads but did not move
+  Routes ghosts;        // position, velocity, spin (5 doubles; and slip, with materials) of the discs a rank reads but did not move
   Routes partial_sums;  // after the even chunks: the sums a rank's odd chunk goes on with (3 doubles)
   Routes pair_sums;     // after the odd chunks: whole pair sums to the wall owner of a disc on a wall
   Routes whole_sums;    // after the walls: whole sums to the rank that integrates the disc
 };
 
-// The plan of a step cut by `cut` (one share per rank). std::logic_error if some disc lies in
-// two chunks of one parity (the list's chunks forbid it: the sums' order would then depend on
-// the cut).
+// The plan of a step cut by `cut` (one share per rank). The acting bonds [0, acting_bonds) are
+// stepped by the ranks that integrate either disc, after the whole sums arrive (so a bond's
+// discs are read by both: ghosts). std::logic_error if some disc lies in two chunks of one parity
+// (the list's chunks forbid it: the sums' order would then depend on the cut).
 ExchangePlan make_exchange_plan(const NeighborList& list, const WallContacts& walls, const Discs& discs,
-                                const Clusters& clusters, const ThreadSplit& cut);
+                                const Clusters& clusters, const ThreadSplit& cut, const Bonds& bonds,
+                                std::size_t acting_bonds);
 
 }  // namespace orogen

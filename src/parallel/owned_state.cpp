@@ -14,6 +14,7 @@ void for_each_owned_value(RankAccess& a, const ExchangePlan& plan, int owner, F&
   for (std::size_t i = 0; i < d.size(); ++i) {
     if (plan.step_rank[i] != owner) continue;
     f(d.x[i]); f(d.y[i]); f(d.vx[i]); f(d.vy[i]); f(d.omega[i]); f(d.theta[i]);
+    if (d.has_materials) f(d.slip[i]);
   }
   Clusters& c = a.clusters;
   const auto r = static_cast<std::size_t>(owner);
@@ -30,6 +31,13 @@ void for_each_owned_value(RankAccess& a, const ExchangePlan& plan, int owner, F&
       f(xi[p]);
       if (!roll.empty()) f(roll[p]);
     }
+  }
+  // A bond's state is its first disc's integrating rank's (both sides step a bond across the cut alike).
+  Bonds& B = a.bonds;
+  const std::size_t acting = B.id_a.empty() ? 0 : a.bond_scratch.acting;
+  for (std::size_t k = 0; k < acting; ++k) {
+    if (plan.step_rank[B.a[k]] != owner) continue;
+    f(B.fn[k]); f(B.fs[k]); f(B.moment[k]);
   }
   WallContacts& wc = a.contacts.walls;
   for (std::size_t k = 0; k < wc.size(); ++k) {

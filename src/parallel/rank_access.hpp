@@ -18,17 +18,28 @@ struct RankAccess {
   std::vector<DiscForce>& forces;
   double& moved;
   const double dt;
+  Bonds& bonds;
+  BondScratch& bond_scratch;
 
   explicit RankAccess(World& w)
       : world(w), discs(w.discs_), clusters(w.clusters_), walls(w.walls_), law(w.law_), body(w.body_),
-        neighbors(w.neighbors_), contacts(w.contacts_), forces(w.scratch_.forces), moved(w.moved_), dt(w.dt_) {}
+        neighbors(w.neighbors_), contacts(w.contacts_), forces(w.scratch_.forces), moved(w.moved_), dt(w.dt_),
+        bonds(w.bonds_), bond_scratch(w.bond_scratch_) {}
 
   void rebuild_if_stale() { world.rebuild_if_stale(); }
-  // The store's rolling histories kept or dropped for this step, as World::step_stages does (a
-  // world over ranks has no materials: the law's coefficient for every pair).
-  void prepare_rolling() {
-    DiscCoefficients uniform;
-    world.prepare_rolling(uniform);
+  // What the contact stages read besides the discs, as World::step_stages prepares it: in a
+  // world of materials each disc's friction from its slip (current for the discs this rank reads:
+  // they came with the ghosts) and that slip for weakening walls; the rolling histories.
+  void prepare_contact_coefficients(DiscCoefficients& disc, WallSlip& wall_slip) {
+    world.prepare_contact_coefficients(disc, wall_slip);
+  }
+  // The acting bonds first, in their discs' order, after a list build or new bonds, as
+  // World::step_stages does; whether that re-ordered them (the plan's bond routes then change).
+  bool prepare_bonds() {
+    if (bonds.id_a.empty()) return false;
+    const bool again = bond_scratch.activity_build != neighbors.builds;
+    prepare_bond_scratch(bonds, discs, neighbors.builds, bond_scratch);
+    return again;
   }
   void finish_step() { world.finish_step(); }
 };

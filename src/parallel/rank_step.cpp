@@ -9,12 +9,12 @@
 #include "contact/pair_forces.hpp"
 #include "integrate/integrator.hpp"
 #include "parallel/owned_state.hpp"
+#include "util/soa.hpp"
 
 namespace orogen {
 namespace {
 
-constexpr std::size_t kGhostValues = 5;  // x, y, vx, vy, omega: what the force phases read
-constexpr std::size_t kSumValues = 3;    // fx, fy, torque
+constexpr std::size_t kBreakValues = 4;  // bond index, midpoint x and y, mode
 
 // Adds the seconds from its construction to its end to `total` (timing for the log only).
 class Stopwatch {
@@ -32,15 +32,11 @@ class Stopwatch {
 }  // namespace
 
 void check_steppable_over_ranks(const World& world) {
-  const char* missing = nullptr;
-  if (!world.bonds().id_a.empty()) missing = "bonds";
-  else if (world.discs().has_materials) missing = "named materials (per-disc friction and slip)";
-  else if (!world.hooks().only_pins(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration) ||
-           world.hooks().pins().size() > 1)
-    missing = "hooks inside the step (other than one pin: the constant-velocity base's)";
-  if (missing)
-    throw std::invalid_argument(std::string("a step over ranks does not run ") + missing +
-                                " yet (docs/domain-decomposition.md)");
+  if (!world.hooks().only_pins(Stage::AfterForces) || !world.hooks().empty(Stage::AfterIntegration) ||
+      world.hooks().pins().size() > 1)
+    throw std::invalid_argument(
+        "a step over ranks does not run hooks inside the step (other than one pin: the constant-velocity "
+        "base's) yet (docs/domain-decomposition.md)");
 }
 
 RankStep::RankStep(World& world, RankTransport& transport, RankCut cut)
@@ -73,15 +69,23 @@ void RankStep::post(Phase phase) {
         if (q == rank_ || discs.empty()) continue;
         const Discs& d = access_.discs;
         buffer_.clear();
-        for (const auto i : discs) buffer_.insert(buffer_.end(), {d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i]});
+        for (const auto i : discs) {
+          buffer_.insert(buffer_.end(), {d.x[i], d.y[i], d.vx[i], d.vy[i], d.omega[i]});
+          if (d.has_materials) buffer_.push_back(d.slip[i]);  // its friction in this step, its running slip
+        }
         transport_->send(q, buffer_);
       }
       break;
     case Phase::EvenPairs:
     case Phase::OddPairs: {
       const int parity = phase == Phase::EvenPairs ? 0 : 1;
+      if (parity == 0) {  // the discs this rank reads are current: their friction from their slip
+        coefficients_ = {};
+        wall_slip_ = {};
+        access_.prepare_contact_coefficients(coefficients_, wall_slip_);
+      }
       on_threads([&](const ThreadSplit& threads, std::size_t t) {
-        pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, DiscCoefficients{},
+        pair_forces_parity(access_.neighbors, access_.contacts.pairs, access_.discs, access_.law, coefficients_,
                            access_.dt, forces, threads, t, parity);
       });
       if (parity == 0 && !dropped(Exchange::PartialSums)) send_sums(plan_.partial_sums);
@@ -90,7 +94,7 @@ void RankStep::post(Phase phase) {
     }
     case Phase::Walls:
       on_threads([&](const ThreadSplit& threads, std::size_t t) {
-        wall_forces_share(access_.contacts.walls, access_.discs, access_.walls, access_.law, access_.dt, WallSlip{},
+        wall_forces_share(access_.contacts.walls, access_.discs, access_.walls, access_.law, access_.dt, wall_slip_,
                           forces, threads, t);
       });
       if (!dropped(Exchange::WholeSums)) send_sums(plan_.whole_sums);
@@ -112,13 +116,15 @@ void RankStep::take(Phase phase) {
       for (int q = 0; q < ranks_; ++q) {
         const auto& discs = plan_.ghosts(q, rank_);
         if (q == rank_ || discs.empty()) continue;
-        buffer_.resize(kGhostValues * discs.size());
-        transport_->receive(q, buffer_);
         Discs& d = access_.discs;
+        const std::size_t values = d.has_materials ? 6 : 5;
+        buffer_.resize(values * discs.size());
+        transport_->receive(q, buffer_);
         const double* v = buffer_.data();
         for (const auto i : discs) {
           d.x[i] = v[0]; d.y[i] = v[1]; d.vx[i] = v[2]; d.vy[i] = v[3]; d.omega[i] = v[4];
-          v += kGhostValues;
+          if (d.has_materials) d.slip[i] = v[5];
+          v += values;
         }
       }
       break;
@@ -130,6 +136,7 @@ void RankStep::take(Phase phase) {
       break;
     case Phase::Walls:
       if (!dropped(Exchange::WholeSums)) receive_sums(plan_.whole_sums);
+      step_bonds();  // on the whole sums, and before a pin holds a body (one process: bonds, then hooks)
       if (has_pins()) take_pin_flags();
       break;
     case Phase::Integration:
@@ -160,8 +167,9 @@ void RankStep::take_build() {
     whole_ = true;
     ++serial_.builds;
   }
-  if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds) make_plan();
-  access_.prepare_rolling();
+  // The bonds re-ordered (after a build, or new bonds): their routes too.
+  const bool bonds_moved = access_.prepare_bonds();
+  if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds || bonds_moved) make_plan();
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
 }
 
@@ -194,7 +202,8 @@ void RankStep::receive_owned_states() {
 void RankStep::make_plan() {
   const ThreadSplit cut = cut_(access_.neighbors, access_.discs, access_.clusters, ranks_);
   if (cut.threads() != ranks_) throw std::logic_error("a rank cut with another number of shares than ranks");
-  plan_ = make_exchange_plan(access_.neighbors, access_.contacts.walls, access_.discs, access_.clusters, cut);
+  plan_ = make_exchange_plan(access_.neighbors, access_.contacts.walls, access_.discs, access_.clusters, cut,
+                             access_.bonds, access_.bonds.id_a.empty() ? 0 : access_.bond_scratch.acting);
 }
 
 void RankStep::send_sums(const Routes& routes) {
@@ -202,8 +211,12 @@ void RankStep::send_sums(const Routes& routes) {
   for (int q = 0; q < ranks_; ++q) {
     const auto& discs = routes(rank_, q);
     if (q == rank_ || discs.empty()) continue;
+    const Discs& d = access_.discs;
     buffer_.clear();
-    for (const auto i : discs) buffer_.insert(buffer_.end(), {forces[i].fx, forces[i].fy, forces[i].torque});
+    for (const auto i : discs) {
+      buffer_.insert(buffer_.end(), {forces[i].fx, forces[i].fy, forces[i].torque});
+      if (d.has_materials) buffer_.push_back(d.slip[i]);  // a running sum, as the force
+    }
     transport_->send(q, buffer_);
   }
 }
@@ -213,13 +226,16 @@ void RankStep::receive_sums(const Routes& routes) {
   for (int q = 0; q < ranks_; ++q) {
     const auto& discs = routes(q, rank_);
     if (q == rank_ || discs.empty()) continue;
-    buffer_.resize(kSumValues * discs.size());
+    Discs& d = access_.discs;
+    const std::size_t values = d.has_materials ? 4 : 3;
+    buffer_.resize(values * discs.size());
     transport_->receive(q, buffer_);
     const double* v = buffer_.data();
     // Set, not added: the sum arrives whole so far, in the order of one process.
     for (const auto i : discs) {
       forces[i] = {v[0], v[1], v[2]};
-      v += kSumValues;
+      if (d.has_materials) d.slip[i] = v[3];
+      v += values;
     }
   }
 }
@@ -314,6 +330,7 @@ void RankStep::integrate() {
   not_finite_ = static_cast<double>(not_finite);
   buffer_ = {max2_, not_finite_};
   if (has_pins()) buffer_.push_back(static_cast<double>(pins_found_.size()));
+  if (has_bonds_) buffer_.push_back(static_cast<double>(breaks_found_.size()));
   for (int q = 0; q < ranks_; ++q)
     if (q != rank_) transport_->send(q, buffer_);
   if (!pins_found_.empty()) {
@@ -321,23 +338,87 @@ void RankStep::integrate() {
     for (int q = 0; q < ranks_; ++q)
       if (q != rank_) transport_->send(q, buffer_);
   }
+  if (!breaks_found_.empty()) {
+    buffer_.clear();
+    for (const auto& b : breaks_found_) buffer_.insert(buffer_.end(), {static_cast<double>(b.bond), b.x, b.y, b.mode});
+    for (int q = 0; q < ranks_; ++q)
+      if (q != rank_) transport_->send(q, buffer_);
+  }
+}
+
+void RankStep::step_bonds() {
+  breaks_found_.clear();
+  has_bonds_ = !access_.bonds.id_a.empty();
+  if (!has_bonds_) return;
+  // The acting bonds with a disc this rank integrates, in bond order: those of a disc are added
+  // to its sum in the order of one process (apply_bond_forces). A bond across the cut is stepped
+  // alike by both ranks (its discs' motion came with the ghosts), so both know if it broke.
+  Bonds& B = access_.bonds;
+  const std::int32_t* step_rank = plan_.step_rank.data();
+  my_bonds_.clear();
+  for (std::size_t k = 0; k < access_.bond_scratch.acting; ++k)
+    if (step_rank[B.a[k]] == rank_ || step_rank[B.b[k]] == rank_) my_bonds_.push_back(static_cast<std::uint32_t>(k));
+  bond_forces_of(B, access_.discs, access_.dt, access_.bond_scratch, my_bonds_);
+  const BondScratch& s = access_.bond_scratch;
+  const Discs& d = access_.discs;
+  DiscForce* force = access_.forces.data();
+  for (const std::uint32_t k : my_bonds_) {
+    const auto a = B.a[k], b = B.b[k];
+    if (s.broken[k]) {
+      breaks_found_.push_back({k, 0.5 * (d.x[a] + d.x[b]), 0.5 * (d.y[a] + d.y[b]), static_cast<double>(s.broken[k] - 1)});
+      continue;
+    }
+    if (step_rank[a] == rank_) { force[a].fx -= s.fx[k]; force[a].fy -= s.fy[k]; force[a].torque += s.torque_a[k]; }
+    if (step_rank[b] == rank_) { force[b].fx += s.fx[k]; force[b].fy += s.fy[k]; force[b].torque += s.torque_b[k]; }
+  }
+}
+
+void RankStep::remove_broken_bonds() {
+  // Every rank's breaks, each once (a bond across the cut was found by both), in bond order: the
+  // log and the bonds of one process in every copy.
+  auto& all = breaks_all_;
+  std::sort(all.begin(), all.end(), [](const FoundBreak& p, const FoundBreak& q) { return p.bond < q.bond; });
+  all.erase(std::unique(all.begin(), all.end(), [](const FoundBreak& p, const FoundBreak& q) { return p.bond == q.bond; }),
+            all.end());
+  if (all.empty()) return;
+  Bonds& B = access_.bonds;
+  World& w = access_.world;
+  std::vector<std::uint8_t> keep(B.size(), 1);
+  for (const auto& b : all) {
+    B.breaks.push_back({w.step(), w.time(), B.id_a[b.bond], B.id_b[b.bond], b.x, b.y, static_cast<BondBreakMode>(b.mode)});
+    keep[b.bond] = 0;
+  }
+  compact_arrays(B, keep);
+  access_.bond_scratch.acting -= all.size();  // the acting bonds still first, in order
 }
 
 void RankStep::take_displacements() {
   const bool pins = has_pins();
   if (pins) pins_all_ = pins_found_;  // every rank's, this one's first
+  breaks_all_ = breaks_found_;
   for (int q = 0; q < ranks_; ++q) {
     if (q == rank_) continue;
-    buffer_.resize(pins ? 3 : 2);
+    buffer_.resize(2 + (pins ? 1 : 0) + (has_bonds_ ? 1 : 0));
     transport_->receive(q, buffer_);
     max2_ = std::max(max2_, buffer_[0]);  // a max is exact in any order
     not_finite_ += buffer_[1];
-    if (pins && buffer_[2] > 0) {
-      buffer_.resize(static_cast<std::size_t>(buffer_[2]));
+    const auto pinned = static_cast<std::size_t>(pins ? buffer_[2] : 0);
+    const auto broken = static_cast<std::size_t>(has_bonds_ ? buffer_.back() : 0);
+    if (pinned > 0) {
+      buffer_.resize(pinned);
       transport_->receive(q, buffer_);
       for (const double i : buffer_) pins_all_.push_back(static_cast<std::uint32_t>(i));
     }
+    if (broken > 0) {
+      buffer_.resize(kBreakValues * broken);
+      transport_->receive(q, buffer_);
+      for (std::size_t k = 0; k < broken; ++k) {
+        const double* v = buffer_.data() + kBreakValues * k;
+        breaks_all_.push_back({static_cast<std::uint32_t>(v[0]), v[1], v[2], v[3]});
+      }
+    }
   }
+  remove_broken_bonds();
   // Every copy holds and records what any rank pinned (the integrating rank held its own bodies
   // before it moved them), so that all copies keep the same motion flags and the same record.
   if (pins) hold(pins_all_, true);

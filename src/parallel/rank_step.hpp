@@ -9,19 +9,25 @@
 //   Ghosts       the motion of the discs this rank reads but another moved
 //   EvenPairs    the even chunks; their running sums to the odd chunk's rank
 //   OddPairs     the odd chunks; whole pair sums to the wall owner of a disc on a wall
-//   Walls        the wall forces of the disc range; whole sums to the integrating rank; with a
-//                pin hook (StageHooks::Pin), the bodies its discs pin, flagged to their
-//                integrating rank, which holds them before it integrates
+//   Walls        the wall forces of the disc range; whole sums to the integrating rank, which
+//                then steps the bonds of the discs it integrates (a bond across the cut on both
+//                sides, alike) and adds them in bond order; with a pin hook (StageHooks::Pin),
+//                the bodies its discs pin, flagged to their integrating rank, which holds them
+//                before it integrates
 //   Integration  the free discs of the disc range and the bodies of the body range; the largest
-//                displacement (and the discs pinned) to every rank; walls moved, the clock on
-// Each phase runs on the OpenMP threads one process of the rank's size would use, cutting the
-// rank's share again (split_share): the same bits for any thread count.
-// Not yet: bonds, named materials, hooks inside the step other than pins (std::invalid_argument).
+//                displacement (and the discs pinned, the bonds broken) to every rank; the broken
+//                bonds logged and removed in every copy; walls moved, the clock on
+// Named materials: a disc's slip travels with its motion (ghosts) and, as a running sum, with
+// its forces. Each phase runs on the OpenMP threads one process of the rank's size would use,
+// cutting the rank's share again (split_share): the same bits for any thread count.
+// Not yet: hooks inside the step other than pins (std::invalid_argument).
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
 
+#include "boundary/wall_forces.hpp"
+#include "contact/pair_forces.hpp"
 #include "parallel/exchange_plan.hpp"
 #include "parallel/rank_access.hpp"
 #include "parallel/rank_transport.hpp"
@@ -32,8 +38,8 @@ enum class Phase : std::uint8_t { Build, Ghosts, EvenPairs, OddPairs, Walls, Int
 inline constexpr std::array<Phase, 6> kStepPhases = {Phase::Build,    Phase::Ghosts, Phase::EvenPairs,
                                                      Phase::OddPairs, Phase::Walls,  Phase::Integration};
 
-// std::invalid_argument naming what a step over ranks does not run yet (bonds, named materials,
-// hooks inside the step). Check the world given, not a copy: a copy drops its hooks.
+// std::invalid_argument naming what a step over ranks does not run yet (hooks inside the step
+// other than a pin). Check the world given, not a copy: a copy drops its hooks.
 void check_steppable_over_ranks(const World& world);
 
 // The exchanges a test may drop, to show that the results then differ.
@@ -82,6 +88,9 @@ class RankStep {
   // The discs' force sums along `routes`, out of this rank, or into it (set, not added).
   void send_sums(const Routes& routes);
   void receive_sums(const Routes& routes);
+  // This rank's bonds stepped and added; the breaks every rank found applied in every copy.
+  void step_bonds();
+  void remove_broken_bonds();
   void integrate();
   void take_displacements();
   // Pin hooks: the discs of this rank's disc range that touch a pin's walls and are not yet
@@ -110,6 +119,16 @@ class RankStep {
   std::vector<double> buffer_;
   // This step's pinned discs: found as wall owner, held as integrator, and those of every rank.
   std::vector<std::uint32_t> pins_found_, pins_held_, pins_all_;
+  // This step's contact coefficients (World::prepare_contact_coefficients), bonds and breaks.
+  DiscCoefficients coefficients_;
+  WallSlip wall_slip_;
+  bool has_bonds_ = false;
+  std::vector<std::uint32_t> my_bonds_;
+  struct FoundBreak {
+    std::uint32_t bond;
+    double x, y, mode;
+  };
+  std::vector<FoundBreak> breaks_found_, breaks_all_;
   std::array<bool, 4> dropped_{};
   SerialWork serial_;
 };

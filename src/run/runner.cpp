@@ -268,8 +268,8 @@ void check_runnable_over_ranks(const RunOptions& opt, int ranks) {
 }
 
 // Hands the steps of the run's world to this MPI rank. Refused, with the folder of a new run
-// released, where the world has what a step over ranks does not run yet (bonds, named
-// materials, a hook inside the step other than the constant-velocity base's pin) or cannot be cut into as many
+// released, where the world has what a step over ranks does not run yet (a hook inside the
+// step other than the constant-velocity base's pin) or cannot be cut into as many
 // slabs as ranks (a rank's slab is whole chunks of the pair list).
 std::unique_ptr<MpiStepping> step_over_ranks(Run& run, const RunOptions& opt, std::optional<RunFolderLock>& lock,
                                              spdlog::logger& logger) {

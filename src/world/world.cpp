@@ -104,22 +104,9 @@ void World::step_stages(const ThreadSplit* given) {
   const bool after_forces = !hooks_.empty(Stage::AfterForces);
   std::exception_ptr hook_error;
   ThreadSplit fallback;
-  // Named materials: each disc's friction from its material and its slip (contact/materials.hpp).
   DiscCoefficients disc_coefficients;
-  if (discs_.has_materials) {
-    disc_friction_.resize(discs_.size());
-    for (std::size_t i = 0; i < discs_.size(); ++i)
-      disc_friction_[i] = materials_.list[discs_.material[i]].friction_at(discs_.slip[i]);
-    disc_coefficients.friction = disc_friction_.data();
-  }
-  prepare_rolling(disc_coefficients);
-  // Weakening walls: each disc's coefficient from its slip as the step began (the pair stage adds
-  // to it before the wall stage runs).
   WallSlip wall_slip;
-  if (discs_.has_materials && std::any_of(walls_.begin(), walls_.end(), [](const Wall& w) { return w.weakens; })) {
-    slip_at_step_start_.assign(discs_.slip.begin(), discs_.slip.end());
-    wall_slip = {slip_at_step_start_.data(), discs_.slip.data()};
-  }
+  prepare_contact_coefficients(disc_coefficients, wall_slip);
   if (!bonds_.id_a.empty()) prepare_bond_scratch(bonds_, discs_, neighbors_.builds, bond_scratch_);
   const std::size_t bond_count = bonds_.id_a.empty() ? 0 : bond_scratch_.acting;
   // One thread team for all three stages (a team per stage cost a fork and a join each), each
@@ -164,6 +151,23 @@ void World::step_stages(const ThreadSplit* given) {
   }
   if (hook_error) std::rethrow_exception(hook_error);
   moved_ = Displacement{max2, not_finite}.distance();
+}
+
+void World::prepare_contact_coefficients(DiscCoefficients& disc, WallSlip& wall_slip) {
+  // Named materials: each disc's friction from its material and its slip (contact/materials.hpp).
+  if (discs_.has_materials) {
+    disc_friction_.resize(discs_.size());
+    for (std::size_t i = 0; i < discs_.size(); ++i)
+      disc_friction_[i] = materials_.list[discs_.material[i]].friction_at(discs_.slip[i]);
+    disc.friction = disc_friction_.data();
+  }
+  prepare_rolling(disc);
+  // Weakening walls: each disc's coefficient from its slip as the step began (the pair stage adds
+  // to it before the wall stage runs).
+  if (discs_.has_materials && std::any_of(walls_.begin(), walls_.end(), [](const Wall& w) { return w.weakens; })) {
+    slip_at_step_start_.assign(discs_.slip.begin(), discs_.slip.end());
+    wall_slip = {slip_at_step_start_.data(), discs_.slip.data()};
+  }
 }
 
 bool World::resists_rolling() const {

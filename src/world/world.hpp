@@ -38,6 +38,7 @@ namespace orogen {
 
 class ArchiveReader;
 class ArchiveWriter;
+struct WallSlip;
 
 // Thrown when the simulation blows up; the message names the likely cause.
 struct InstabilityError : std::runtime_error {
@@ -279,6 +280,10 @@ class World {
   // of materials each disc's coefficient (docs/model.md "Rolling resistance").
   bool resists_rolling() const;
   void prepare_rolling(DiscCoefficients& disc);
+  // What the contact stages of a step read besides the discs: in a world of materials each disc's
+  // friction from its slip as the step begins (and that slip, for weakening walls); the rolling
+  // histories kept or dropped (prepare_rolling). Before the pair forces of every step.
+  void prepare_contact_coefficients(DiscCoefficients& disc, WallSlip& wall_slip);
 
   Discs discs_;
   Clusters clusters_;

@@ -1,7 +1,8 @@
 """Tests of one run spread over MPI ranks, `mpirun -n K orogen run` (issue 41,
 docs/domain-decomposition.md): the files of 1, 2 and 3 ranks are those of one process, bit for
 bit, for a short wedge with inflow and erosion, a wedge with surface laws, deposition and a
-flexing base, a wedge on the constant-velocity base, a singly-vergent wedge and a packing, and on 2 ranks of 2 threads each; a run
+flexing base, a wedge on the constant-velocity base, a singly-vergent wedge, a packing, a layered
+crust with bonds that break, Buiter et al.'s experiment 2, and on 2 ranks of 2 threads each; a run
 stopped on 3 ranks resumes on 2; a rank killed with SIGKILL
 takes the run down, and the run then resumes on another number of ranks, bitwise; what a run
 over ranks does not run yet is refused with exit 2.
@@ -39,9 +40,17 @@ RUNS = {
                        "--set", "singly.speed=0.05", "--set", "singly.shortening=1", "--set", "singly.outputs=5"],
     "packing": ["--set", "run.experiment=packing", "--set", "particles.packing=random_clusters",
                 "--set", "layer.length=30", "--set", "layer.thickness=6"],
+    # A layered crust (named materials, a bonded weakening rock, weak base layer) in the wedge.
+    "wedge_layered": [os.path.join(ROOT, "examples", "wedge_layered.toml"), "--set", "wedge.s_end=0.1",
+                      "--set", "wedge.outputs=2"],
+    # Buiter et al.'s experiment 2: materials that resist rolling, bonds, a weakening base.
+    "buiter_exp2": [os.path.join(ROOT, "examples", "buiter2016_exp2.toml"), "--set", "singly.shortening=0.05",
+                    "--set", "singly.outputs=2"],
 }
 # The run's results: the same bits wherever it ran (the checkpoint holds the whole state).
-COMPARED = ("checkpoint.bin", "series.csv", "removals.csv", "summary.csv", "packing.h5")
+COMPARED = ("checkpoint.bin", "series.csv", "removals.csv", "summary.csv", "packing.h5", "bond_breaks.csv")
+# Runs whose bonds must break in the test, so that the breaks' exchange is tested.
+BREAKING = ("wedge_layered", "buiter_exp2")
 
 
 def same_contents(a, b):
@@ -87,6 +96,9 @@ class RunOverRanks(unittest.TestCase):
         for name, args in RUNS.items():
             with self.subTest(run=name):
                 self.run_ok(args + ["--out", self.out(name)])
+                if name in BREAKING:
+                    with open(os.path.join(self.out(name), "bond_breaks.csv")) as f:
+                        self.assertGreater(sum(1 for line in f if not line.startswith("#")), 10)
                 for ranks in (1, 2, 3):
                     out = self.out(f"{name}_{ranks}")
                     r = self.run_ok(args + ["--out", out], ranks)
@@ -148,14 +160,12 @@ class RunOverRanks(unittest.TestCase):
         self.assert_same_files(self.out("one"), out)
 
     def test_what_a_run_over_ranks_does_not_run_yet_is_refused(self):
-        # A layered crust: named materials and bonds.
-        layered = os.path.join(ROOT, "examples", "wedge_layered.toml")
-        r = orogen([layered, "--set", "wedge.s_end=0.1"] + QUIET + ["--threads", "1", "--out", self.out("refused")], 2)
+        # A branch: its replay runs one process.
+        self.run_ok(RUNS["packing"] + ["--out", self.out("trunk")])
+        r = orogen(["--from", self.out("trunk"), "--out", self.out("refused")] + QUIET + ["--threads", "1"], 2)
         self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
-        self.assertIn("cannot run over 2 MPI ranks", r.stderr)
-        self.assertIn("bonds", r.stderr)
+        self.assertIn("cannot run a branch (--from)", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.out("refused"), "config.toml")))
-
 
 if __name__ == "__main__":
     unittest.main()
