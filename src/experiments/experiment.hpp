@@ -75,6 +75,10 @@ class Experiment {
   virtual void finish(World&, const std::filesystem::path& /*out_dir*/) {}
   // The run's results, written to summary.csv after finish() (none: no file).
   virtual std::vector<SummaryValue> summary(const World&) const { return {}; }
+  // Whether a run over MPI ranks may step it: its stages gather the world (World::make_whole)
+  // before they read or change the discs. The others (the small samples: piles, the biaxial
+  // test) are refused over ranks with a named error.
+  virtual bool runs_over_ranks() const { return false; }
   // Short status for the progress line, and the fraction done (negative if unknown).
   virtual std::string status(const World& world) const = 0;
   virtual double fraction_done(const World&) const { return -1.0; }

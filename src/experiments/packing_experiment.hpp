@@ -34,6 +34,7 @@ class PackingExperiment final : public Experiment {
   void load(const ArchiveReader& in) override;
   void finish(World& world, const std::filesystem::path& out_dir) override;
   std::vector<SummaryValue> summary(const World& world) const override;
+  bool runs_over_ranks() const override { return true; }
   std::string status(const World& world) const override;
   double h0() const override { return packing_.thickness; }
   std::array<double, 4> view_box(const World& world) const override;

@@ -55,6 +55,7 @@ class SinglyVergentExperiment final : public Experiment {
   void load(const ArchiveReader& in) override;
   void adopt_branch_config(World& w) override;
   std::vector<SummaryValue> summary(const World& world) const override;
+  bool runs_over_ranks() const override { return true; }
   std::string status(const World& world) const override;
   double fraction_done(const World& world) const override { return shortening(world) / spec_.shortening; }
   double h0() const override { return spec_.h0; }

@@ -79,6 +79,7 @@ class WedgeExperiment final : public Experiment {
   void save(ArchiveWriter& out) const override;
   void load(const ArchiveReader& in) override;
   void adopt_branch_config(World& w) override;
+  bool runs_over_ranks() const override { return true; }
   std::string status(const World& world) const override;
   double fraction_done(const World& world) const override { return convergence(world) / spec_.s_end; }
   double h0() const override { return spec_.h0; }

@@ -334,6 +334,11 @@ int run_command(const RunOptions& opt) {
       throw UsageError(fmt::format("{} already holds a run; continue it with --resume {} or choose another --out",
                                    opt.out.string(), opt.out.string()));
     auto experiment = make_experiment(config);
+    if (ranks > 1 && !experiment->runs_over_ranks())
+      throw UsageError(fmt::format("a run over {} MPI ranks cannot run run.experiment = \"{}\": only the wedge, the "
+                                   "singly-vergent wedge and packings run over ranks; run it as one process "
+                                   "(docs/domain-decomposition.md)",
+                                   ranks, config.get_string("run.experiment")));
     if (opt.surface_law && !experiment->set_surface_script(opt.surface_law))
       throw UsageError("a surface law needs an experiment with surface processes (a wedge; docs/surface.md)");
     check_in_run_analysis(config);  // before the folder is claimed: a refusal leaves nothing

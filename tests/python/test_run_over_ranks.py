@@ -166,6 +166,13 @@ class RunOverRanks(unittest.TestCase):
         self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
         self.assertIn("cannot run a branch (--from)", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.out("refused"), "config.toml")))
+        # The small samples, whose stages read the world between steps without gathering it.
+        for experiment in ("biaxial", "repose"):
+            out = self.out(f"refused_{experiment}")
+            r = orogen(["--set", f"run.experiment={experiment}", "--out", out] + QUIET + ["--threads", "1"], 2)
+            self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+            self.assertIn(f'cannot run run.experiment = "{experiment}"', r.stderr)
+            self.assertFalse(os.path.exists(out))
 
 if __name__ == "__main__":
     unittest.main()
