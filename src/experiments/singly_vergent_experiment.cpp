@@ -76,25 +76,40 @@ bool SinglyVergentExperiment::advance(World& w) {
   if (shortening(w) >= spec_.shortening) return false;
   w.advance();
   // The laws act between the far wall and the backstop.
-  // Both stages read the discs: over ranks, every copy first gets the whole state.
+  // Over ranks, the surface laws read and change the discs: every copy first gets the whole
+  // state. Strays are found from the positions alone; removing them (rare) needs the whole state.
   if (surface_.updates_at(w)) {
     w.make_whole();
     surface_.update(w, 0.0, w.wall(kBackstop).ax, spec_.surface.every * w.dt());
   }
   if (w.step() % kHousekeepingEvery == 0) {
-    w.make_whole();
-    remove_strays(w);
+    w.gather_positions();
+    if (has_strays(w)) {
+      w.make_whole();
+      remove_strays(w);
+    }
   }
   return true;
 }
 
 // A disc squeezed out through a wall's end would fall for ever.
+bool SinglyVergentExperiment::is_stray(const World& w, std::size_t i) const {
+  const auto& d = w.discs();
+  return d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.wall(kBackstop).ax + 2.0;
+}
+
+bool SinglyVergentExperiment::has_strays(const World& w) const {
+  for (std::size_t i = 0; i < w.discs().size(); ++i)
+    if (is_stray(w, i)) return true;
+  return false;
+}
+
 void SinglyVergentExperiment::remove_strays(World& w) {
   const auto& d = w.discs();
   std::vector<std::uint8_t> flags(d.size(), 0);
   bool any = false;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    flags[i] = d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.wall(kBackstop).ax + 2.0;
+    flags[i] = is_stray(w, i);
     any |= flags[i] != 0;
   }
   if (!any) return;

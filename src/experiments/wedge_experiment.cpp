@@ -220,12 +220,23 @@ void WedgeExperiment::erode(World& w) {
     surface_.ledger().eroded_threshold += before - disc_area(w);
 }
 
+bool WedgeExperiment::is_stray(const World& w, std::size_t i) const {
+  const auto& d = w.discs();
+  return d.y[i] < base_height(w, d.x[i]) - 2.0 || d.x[i] > x_end_ + 2.0 || d.y[i] > 50 * spec_.h0;
+}
+
+bool WedgeExperiment::has_strays(const World& w) const {
+  for (std::size_t i = 0; i < w.discs().size(); ++i)
+    if (is_stray(w, i)) return true;
+  return false;
+}
+
 void WedgeExperiment::remove_strays(World& w) {
   const auto& d = w.discs();
   std::vector<std::uint8_t> flags(d.size(), 0);
   bool any = false;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    flags[i] = d.y[i] < base_height(w, d.x[i]) - 2.0 || d.x[i] > x_end_ + 2.0 || d.y[i] > 50 * spec_.h0;
+    flags[i] = is_stray(w, i);
     any |= flags[i] != 0;
   }
   if (!any) return;
@@ -256,8 +267,13 @@ bool WedgeExperiment::advance(World& w) {
     place_base(w);
   }
   if (w.step() % kHousekeepingEvery == 0) {
-    w.make_whole();
-    remove_strays(w);
+    // Both read positions only; the windows' motion edits are the same in every copy. Removing
+    // strays (rare) changes the discs: the whole state first.
+    w.gather_positions();
+    if (has_strays(w)) {
+      w.make_whole();
+      remove_strays(w);
+    }
     update_windows(w);
   }
   return true;

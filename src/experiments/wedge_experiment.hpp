@@ -126,6 +126,9 @@ class WedgeExperiment final : public Experiment {
   static const std::vector<SeriesColumn>& isostasy_columns();
   std::vector<double> isostasy_values(const World& world, double dp, double dr) const;
   void remove_strays(World& world);
+  // Whether disc i (any disc) left the model: below the base, past the far end, far above.
+  bool is_stray(const World& world, std::size_t i) const;
+  bool has_strays(const World& world) const;
   // The area of the discs [first, last), counted as entered.
   void count_entered(const World& world, std::size_t first, std::size_t last);
   // (Re)makes the surface processes from the spec and the tile (setup and load).

@@ -23,6 +23,7 @@ class MpiStepping final : public RankStepping {
 
   void advance() override { step_.advance(); }
   void make_whole() override { step_.make_whole(); }
+  void gather_positions() override { step_.gather_positions(); }
 
   int rank() const { return transport_.rank(); }
   int ranks() const { return transport_.ranks(); }

@@ -46,25 +46,69 @@ void for_each_owned_value(RankAccess& a, const ExchangePlan& plan, int owner, F&
   }
 }
 
-}  // namespace
-
-void pack_owned_state(RankAccess& a, const ExchangePlan& plan, int owner, std::vector<double>& out) {
-  for_each_owned_value(a, plan, owner, [&](auto& v) { out.push_back(static_cast<double>(v)); });
+// Calls f(value) for each position rank `owner` keeps current: its discs' and bodies' x and y.
+template <class F>
+void for_each_owned_position(RankAccess& a, const ExchangePlan& plan, int owner, F&& f) {
+  Discs& d = a.discs;
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (plan.step_rank[i] == owner) { f(d.x[i]); f(d.y[i]); }
+  Clusters& c = a.clusters;
+  const auto r = static_cast<std::size_t>(owner);
+  for (auto k = static_cast<std::size_t>(plan.cut.body[r]); k < static_cast<std::size_t>(plan.cut.body[r + 1]); ++k) {
+    f(c.x[k]); f(c.y[k]);
+  }
 }
 
-void unpack_owned_state(RankAccess& a, const ExchangePlan& plan, int owner, std::span<const double> in) {
+template <class Each>
+void pack(RankAccess& a, const ExchangePlan& plan, int owner, std::vector<double>& out, Each each) {
+  each(a, plan, owner, [&](auto& v) { out.push_back(static_cast<double>(v)); });
+}
+
+template <class Each>
+void unpack(RankAccess& a, const ExchangePlan& plan, int owner, std::span<const double> in, Each each) {
   std::size_t k = 0;
-  for_each_owned_value(a, plan, owner, [&](auto& v) {
+  each(a, plan, owner, [&](auto& v) {
     if (k == in.size()) throw std::logic_error("owned state of another size than its plan's");
     v = static_cast<std::remove_reference_t<decltype(v)>>(in[k++]);
   });
   if (k != in.size()) throw std::logic_error("owned state of another size than its plan's");
 }
 
-std::size_t owned_state_size(RankAccess& a, const ExchangePlan& plan, int owner) {
+template <class Each>
+std::size_t count(RankAccess& a, const ExchangePlan& plan, int owner, Each each) {
   std::size_t n = 0;
-  for_each_owned_value(a, plan, owner, [&](auto&) { ++n; });
+  each(a, plan, owner, [&](auto&) { ++n; });
   return n;
+}
+
+// The two walks as values (a function template cannot be passed as one).
+constexpr auto kState = [](RankAccess& a, const ExchangePlan& p, int owner, auto&& f) { for_each_owned_value(a, p, owner, f); };
+constexpr auto kPositions = [](RankAccess& a, const ExchangePlan& p, int owner, auto&& f) {
+  for_each_owned_position(a, p, owner, f);
+};
+
+}  // namespace
+
+void pack_owned_state(RankAccess& a, const ExchangePlan& plan, int owner, std::vector<double>& out) {
+  pack(a, plan, owner, out, kState);
+}
+
+void unpack_owned_state(RankAccess& a, const ExchangePlan& plan, int owner, std::span<const double> in) {
+  unpack(a, plan, owner, in, kState);
+}
+
+std::size_t owned_state_size(RankAccess& a, const ExchangePlan& plan, int owner) { return count(a, plan, owner, kState); }
+
+void pack_owned_positions(RankAccess& a, const ExchangePlan& plan, int owner, std::vector<double>& out) {
+  pack(a, plan, owner, out, kPositions);
+}
+
+void unpack_owned_positions(RankAccess& a, const ExchangePlan& plan, int owner, std::span<const double> in) {
+  unpack(a, plan, owner, in, kPositions);
+}
+
+std::size_t owned_positions_size(RankAccess& a, const ExchangePlan& plan, int owner) {
+  return count(a, plan, owner, kPositions);
 }
 
 }  // namespace orogen

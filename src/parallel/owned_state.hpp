@@ -18,4 +18,9 @@ void unpack_owned_state(RankAccess& world, const ExchangePlan& plan, int owner, 
 // How many values rank `owner`'s state packs into.
 std::size_t owned_state_size(RankAccess& world, const ExchangePlan& plan, int owner);
 
+// The same for the positions alone: of the discs rank `owner` integrates and of its bodies.
+void pack_owned_positions(RankAccess& world, const ExchangePlan& plan, int owner, std::vector<double>& out);
+void unpack_owned_positions(RankAccess& world, const ExchangePlan& plan, int owner, std::span<const double> in);
+std::size_t owned_positions_size(RankAccess& world, const ExchangePlan& plan, int owner);
+
 }  // namespace orogen

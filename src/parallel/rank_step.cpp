@@ -181,6 +181,24 @@ void RankStep::make_whole() {
   whole_ = true;
 }
 
+void RankStep::gather_positions() {
+  if (whole_) return;
+  Stopwatch watch(serial_.gather_seconds);
+  buffer_.clear();
+  pack_owned_positions(access_, plan_, rank_, buffer_);
+  for (int q = 0; q < ranks_; ++q)
+    if (q != rank_) transport_->send(q, buffer_);
+  ++serial_.gathers;
+  ++serial_.position_gathers;
+  serial_.gathered_values += buffer_.size() * static_cast<std::size_t>(ranks_ - 1);
+  for (int q = 0; q < ranks_; ++q) {
+    if (q == rank_) continue;
+    buffer_.resize(owned_positions_size(access_, plan_, q));
+    transport_->receive(q, buffer_);
+    unpack_owned_positions(access_, plan_, q, buffer_);
+  }
+}
+
 void RankStep::send_owned_state() {
   buffer_.clear();
   pack_owned_state(access_, plan_, rank_, buffer_);

@@ -62,12 +62,16 @@ class RankStep {
   // Every rank's owned state into this copy (collective; nothing if it is whole already), so
   // that a stage between steps reads, and may change, the state of one process in each copy.
   void make_whole();
+  // Every rank's disc and body positions into this copy (collective; nothing if it is whole),
+  // which stays not whole: for a stage that reads positions only (World::gather_positions).
+  void gather_positions();
 
   // What a run over ranks costs beyond its slab's work, for the log: the gathers of every
   // rank's state (before list builds and in make_whole), the doubles this rank sent in them,
   // and the seconds it spent in them and in building the whole list.
   struct SerialWork {
     std::uint64_t gathers = 0, gathered_values = 0, builds = 0;
+    std::uint64_t position_gathers = 0;  // of them, gathers of the positions alone
     double gather_seconds = 0, build_seconds = 0;
   };
   const SerialWork& serial_work() const { return serial_; }

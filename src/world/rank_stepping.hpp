@@ -12,6 +12,9 @@ class RankStepping {
   virtual ~RankStepping() = default;
   virtual void advance() = 0;
   virtual void make_whole() = 0;
+  // Every disc's and body's position into every copy, and nothing else (the copy stays not
+  // whole): for a stage that only reads positions before it decides to change anything.
+  virtual void gather_positions() = 0;
 };
 
 // The World's link to its rank, not copied: a copy of a rank's world is a world of its own

@@ -97,6 +97,13 @@ class World {
   void make_whole() {
     if (rank_.rank) rank_.rank->make_whole();
   }
+  // Collective in a run over ranks: every disc's and body's current position in this copy, the
+  // rest of the state as it was (the copy is not whole). For a stage that reads positions only,
+  // and changes what it computes from them in every copy alike (motion flags, kinematic
+  // velocities); one that removes or adds discs calls make_whole() first. Nothing outside.
+  void gather_positions() {
+    if (rank_.rank) rank_.rank->gather_positions();
+  }
   // Makes this world a rank's copy (null: its own again). The rank must outlive the link.
   void step_as_rank(RankStepping* rank) { rank_.rank = rank; }
 
