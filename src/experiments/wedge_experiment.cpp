@@ -249,10 +249,14 @@ bool WedgeExperiment::advance(World& w) {
   if (convergence(w) >= spec_.s_end) return false;
   w.advance();
   feed_slab(w);
-  // Each stage below reads or changes the discs: over ranks, every copy first gets the whole state.
+  // Each stage below reads or changes the discs: over ranks, every copy first gets the whole
+  // state, or the positions alone where they tell that nothing is to change.
   if (spec_.erosion_height > 0 && w.step() % static_cast<std::uint64_t>(spec_.erosion_every) == 0) {
-    w.make_whole();
-    erode(w);
+    w.gather_positions();
+    if (w.any_above(spec_.erosion_height * spec_.h0)) {
+      w.make_whole();
+      erode(w);
+    }
   }
   if (surface_.updates_at(w)) {
     w.make_whole();

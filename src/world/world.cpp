@@ -242,7 +242,14 @@ std::size_t World::remove(std::span<const std::uint8_t> flags, RemovalReason rea
   return removed;
 }
 
-std::size_t World::remove_above(double height, RemovalReason reason) {
+std::size_t World::remove_above(double height, RemovalReason reason) { return remove(above(height), reason); }
+
+bool World::any_above(double height) const {
+  const std::vector<std::uint8_t> flags = above(height);
+  return std::any_of(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; });
+}
+
+std::vector<std::uint8_t> World::above(double height) const {
   std::vector<double> cluster_y(clusters_.size(), 0.0);
   for (std::size_t k = 0; k < clusters_.size(); ++k) {
     int n = 0;
@@ -255,7 +262,7 @@ std::size_t World::remove_above(double height, RemovalReason reason) {
     const double y = discs_.cluster[i] >= 0 ? cluster_y[static_cast<std::size_t>(discs_.cluster[i])] : discs_.y[i];
     flags[i] = y > height;
   }
-  return remove(flags, reason);
+  return flags;
 }
 
 std::size_t World::add_disc(double x, double y, double r) {

@@ -124,6 +124,9 @@ class World {
   // height, is above the given height (the mean, not the centre of mass, which weighs big discs
   // more and can lie on the other side). Used for trimming a packing and for erosion.
   std::size_t remove_above(double height, RemovalReason reason);
+  // Whether remove_above would remove anything (it reads positions only: over ranks, after
+  // gather_positions()).
+  bool any_above(double height) const;
 
   // Adds a free disc and returns its index; the neighbour list is rebuilt on the next step.
   std::size_t add_disc(double x, double y, double r);
@@ -291,6 +294,8 @@ class World {
   // friction from its slip as the step begins (and that slip, for weakening walls); the rolling
   // histories kept or dropped (prepare_rolling). Before the pair forces of every step.
   void prepare_contact_coefficients(DiscCoefficients& disc, WallSlip& wall_slip);
+  // By disc, whether remove_above(height) removes it.
+  std::vector<std::uint8_t> above(double height) const;
 
   Discs discs_;
   Clusters clusters_;
