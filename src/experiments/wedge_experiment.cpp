@@ -264,7 +264,7 @@ bool WedgeExperiment::advance(World& w) {
   }
   if (base_.active()) {
     if (w.step() % static_cast<std::uint64_t>(spec_.isostasy.every) == 0) {
-      w.make_whole();
+      w.gather_positions();  // the load reads the discs' positions and sizes alone
       base_.solve(w.discs(), slab_left_, x_end_, w.step());
       check_base_depth(w);
     }
