@@ -16,6 +16,11 @@ namespace {
 
 constexpr std::size_t kBreakValues = 4;  // bond index, midpoint x and y, mode
 
+// A ghost: x, y, vx, vy, omega (what the force phases read); a sum: fx, fy, torque. In a world
+// of materials both carry the disc's slip too (its friction in the step; a running sum).
+std::size_t ghost_values(const Discs& d) { return d.has_materials ? 6 : 5; }
+std::size_t sum_values(const Discs& d) { return d.has_materials ? 4 : 3; }
+
 // Adds the seconds from its construction to its end to `total` (timing for the log only).
 class Stopwatch {
  public:
@@ -117,7 +122,7 @@ void RankStep::take(Phase phase) {
         const auto& discs = plan_.ghosts(q, rank_);
         if (q == rank_ || discs.empty()) continue;
         Discs& d = access_.discs;
-        const std::size_t values = d.has_materials ? 6 : 5;
+        const std::size_t values = ghost_values(d);
         buffer_.resize(values * discs.size());
         transport_->receive(q, buffer_);
         const double* v = buffer_.data();
@@ -245,7 +250,7 @@ void RankStep::receive_sums(const Routes& routes) {
     const auto& discs = routes(q, rank_);
     if (q == rank_ || discs.empty()) continue;
     Discs& d = access_.discs;
-    const std::size_t values = d.has_materials ? 4 : 3;
+    const std::size_t values = sum_values(d);
     buffer_.resize(values * discs.size());
     transport_->receive(q, buffer_);
     const double* v = buffer_.data();
