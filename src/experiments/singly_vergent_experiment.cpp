@@ -84,37 +84,26 @@ bool SinglyVergentExperiment::advance(World& w) {
   }
   if (w.step() % kHousekeepingEvery == 0) {
     w.gather_positions();
-    if (has_strays(w)) {
+    if (const auto strays = stray_flags(w); any_flagged(strays)) {
       w.make_whole();
-      remove_strays(w);
+      remove_strays(w, strays);
     }
   }
   return true;
 }
 
 // A disc squeezed out through a wall's end would fall for ever.
-bool SinglyVergentExperiment::is_stray(const World& w, std::size_t i) const {
-  const auto& d = w.discs();
-  return d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.wall(kBackstop).ax + 2.0;
-}
-
-bool SinglyVergentExperiment::has_strays(const World& w) const {
-  for (std::size_t i = 0; i < w.discs().size(); ++i)
-    if (is_stray(w, i)) return true;
-  return false;
-}
-
-void SinglyVergentExperiment::remove_strays(World& w) {
+std::vector<std::uint8_t> SinglyVergentExperiment::stray_flags(const World& w) const {
   const auto& d = w.discs();
   std::vector<std::uint8_t> flags(d.size(), 0);
-  bool any = false;
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    flags[i] = is_stray(w, i);
-    any |= flags[i] != 0;
-  }
-  if (!any) return;
+  for (std::size_t i = 0; i < d.size(); ++i)
+    flags[i] = d.y[i] < -2.0 || d.x[i] < -2.0 || d.x[i] > w.wall(kBackstop).ax + 2.0;
+  return flags;
+}
+
+void SinglyVergentExperiment::remove_strays(World& w, std::span<const std::uint8_t> strays) {
   const double before = surface_.active() ? disc_area(w) : 0.0;
-  w.remove(flags, RemovalReason::LeftDomain);
+  w.remove(strays, RemovalReason::LeftDomain);
   if (surface_.active()) surface_.ledger().left += before - disc_area(w);
 }
 

@@ -71,10 +71,10 @@ class SinglyVergentExperiment final : public Experiment {
 
  private:
   void cut_wedge(World& w);
-  void remove_strays(World& w);
-  // Whether disc i (any disc) left the box: below its floor, out past either wall.
-  bool is_stray(const World& w, std::size_t i) const;
-  bool has_strays(const World& w) const;
+  // By disc, whether it left the box (below its floor, out past either wall): positions only;
+  // and their removal, logged.
+  std::vector<std::uint8_t> stray_flags(const World& w) const;
+  void remove_strays(World& w, std::span<const std::uint8_t> strays);
   // (Re)makes the surface processes from the spec (setup and load): columns 2.3 mean radii of
   // the packing's sizes wide, deposits drawn from those sizes, fixed for the run's life.
   void start_surface();

@@ -213,35 +213,23 @@ bool WedgeExperiment::pinned(const World& w, std::size_t disc) const {
 
 // Erosion (thesis 6.3): every disc, or whole cluster by its mean elevation, above the
 // threshold is removed and logged.
-void WedgeExperiment::erode(World& w) {
+void WedgeExperiment::erode(World& w, std::span<const std::uint8_t> above) {
   const bool count = surface_.active();  // the ledger is an output of surface runs only
   const double before = count ? disc_area(w) : 0.0;
-  if (w.remove_above(spec_.erosion_height * spec_.h0, RemovalReason::Eroded) > 0 && count)
-    surface_.ledger().eroded_threshold += before - disc_area(w);
+  if (w.remove(above, RemovalReason::Eroded) > 0 && count) surface_.ledger().eroded_threshold += before - disc_area(w);
 }
 
-bool WedgeExperiment::is_stray(const World& w, std::size_t i) const {
-  const auto& d = w.discs();
-  return d.y[i] < base_height(w, d.x[i]) - 2.0 || d.x[i] > x_end_ + 2.0 || d.y[i] > 50 * spec_.h0;
-}
-
-bool WedgeExperiment::has_strays(const World& w) const {
-  for (std::size_t i = 0; i < w.discs().size(); ++i)
-    if (is_stray(w, i)) return true;
-  return false;
-}
-
-void WedgeExperiment::remove_strays(World& w) {
+std::vector<std::uint8_t> WedgeExperiment::stray_flags(const World& w) const {
   const auto& d = w.discs();
   std::vector<std::uint8_t> flags(d.size(), 0);
-  bool any = false;
-  for (std::size_t i = 0; i < d.size(); ++i) {
-    flags[i] = is_stray(w, i);
-    any |= flags[i] != 0;
-  }
-  if (!any) return;
+  for (std::size_t i = 0; i < d.size(); ++i)
+    flags[i] = d.y[i] < base_height(w, d.x[i]) - 2.0 || d.x[i] > x_end_ + 2.0 || d.y[i] > 50 * spec_.h0;
+  return flags;
+}
+
+void WedgeExperiment::remove_strays(World& w, std::span<const std::uint8_t> strays) {
   const double before = disc_area(w);
-  w.remove(flags, RemovalReason::LeftDomain);
+  w.remove(strays, RemovalReason::LeftDomain);
   surface_.ledger().left += before - disc_area(w);
 }
 
@@ -253,9 +241,9 @@ bool WedgeExperiment::advance(World& w) {
   // state, or the positions alone where they tell that nothing is to change.
   if (spec_.erosion_height > 0 && w.step() % static_cast<std::uint64_t>(spec_.erosion_every) == 0) {
     w.gather_positions();
-    if (w.any_above(spec_.erosion_height * spec_.h0)) {
+    if (const auto above = w.flags_above(spec_.erosion_height * spec_.h0); any_flagged(above)) {
       w.make_whole();
-      erode(w);
+      erode(w, above);
     }
   }
   if (surface_.updates_at(w)) {
@@ -274,9 +262,9 @@ bool WedgeExperiment::advance(World& w) {
     // Both read positions only; the windows' motion edits are the same in every copy. Removing
     // strays (rare) changes the discs: the whole state first.
     w.gather_positions();
-    if (has_strays(w)) {
+    if (const auto strays = stray_flags(w); any_flagged(strays)) {
       w.make_whole();
-      remove_strays(w);
+      remove_strays(w, strays);
     }
     update_windows(w);
   }

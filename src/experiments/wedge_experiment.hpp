@@ -101,7 +101,8 @@ class WedgeExperiment final : public Experiment {
   void size_pins(const World& world);
   void pin(const World& world, std::size_t disc);
   bool pinned(const World& world, std::size_t disc) const;
-  void erode(World& world);
+  // Removes the discs flagged above the threshold (World::flags_above).
+  void erode(World& world, std::span<const std::uint8_t> above);
   // (Re)makes the deflecting base from the spec and the tile (setup and load); the indices of the
   // walls of each base (attach).
   void start_isostasy();
@@ -125,10 +126,10 @@ class WedgeExperiment final : public Experiment {
   // series.csv's columns of the deflecting base, and their values with the fronts Dp, Dr [h0].
   static const std::vector<SeriesColumn>& isostasy_columns();
   std::vector<double> isostasy_values(const World& world, double dp, double dr) const;
-  void remove_strays(World& world);
-  // Whether disc i (any disc) left the model: below the base, past the far end, far above.
-  bool is_stray(const World& world, std::size_t i) const;
-  bool has_strays(const World& world) const;
+  // By disc, whether it left the model (below the base, past the far end, far above): positions
+  // only; and their removal, logged.
+  std::vector<std::uint8_t> stray_flags(const World& world) const;
+  void remove_strays(World& world, std::span<const std::uint8_t> strays);
   // The area of the discs [first, last), counted as entered.
   void count_entered(const World& world, std::size_t first, std::size_t last);
   // (Re)makes the surface processes from the spec and the tile (setup and load).

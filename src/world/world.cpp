@@ -242,14 +242,9 @@ std::size_t World::remove(std::span<const std::uint8_t> flags, RemovalReason rea
   return removed;
 }
 
-std::size_t World::remove_above(double height, RemovalReason reason) { return remove(above(height), reason); }
+std::size_t World::remove_above(double height, RemovalReason reason) { return remove(flags_above(height), reason); }
 
-bool World::any_above(double height) const {
-  const std::vector<std::uint8_t> flags = above(height);
-  return std::any_of(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; });
-}
-
-std::vector<std::uint8_t> World::above(double height) const {
+std::vector<std::uint8_t> World::flags_above(double height) const {
   std::vector<double> cluster_y(clusters_.size(), 0.0);
   for (std::size_t k = 0; k < clusters_.size(); ++k) {
     int n = 0;

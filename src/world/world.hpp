@@ -11,6 +11,7 @@
 // methods below them, which update what depends on what they change (the neighbour list, the
 // member discs of clusters). The checkpoint (world_archive.cpp) and white-box tests
 // (tests/world_internals.hpp) are friends.
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -39,6 +40,11 @@ namespace orogen {
 class ArchiveReader;
 class ArchiveWriter;
 struct WallSlip;
+
+// Whether any disc is flagged (flags by disc index, as World::remove takes them).
+inline bool any_flagged(std::span<const std::uint8_t> flags) {
+  return std::any_of(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; });
+}
 
 // Thrown when the simulation blows up; the message names the likely cause.
 struct InstabilityError : std::runtime_error {
@@ -124,9 +130,9 @@ class World {
   // height, is above the given height (the mean, not the centre of mass, which weighs big discs
   // more and can lie on the other side). Used for trimming a packing and for erosion.
   std::size_t remove_above(double height, RemovalReason reason);
-  // Whether remove_above would remove anything (it reads positions only: over ranks, after
-  // gather_positions()).
-  bool any_above(double height) const;
+  // By disc, whether remove_above(height) removes it (positions only: over ranks, it may follow
+  // gather_positions(); the flags stay valid after make_whole(), which moves no disc).
+  std::vector<std::uint8_t> flags_above(double height) const;
 
   // Adds a free disc and returns its index; the neighbour list is rebuilt on the next step.
   std::size_t add_disc(double x, double y, double r);
@@ -294,8 +300,6 @@ class World {
   // friction from its slip as the step begins (and that slip, for weakening walls); the rolling
   // histories kept or dropped (prepare_rolling). Before the pair forces of every step.
   void prepare_contact_coefficients(DiscCoefficients& disc, WallSlip& wall_slip);
-  // By disc, whether remove_above(height) removes it.
-  std::vector<std::uint8_t> above(double height) const;
 
   Discs discs_;
   Clusters clusters_;
