@@ -3,7 +3,8 @@ forces of a short main-job wedge. The transmitted friction can never exceed the 
 of its base, and the contacts it counts as at the limit carry exactly mu fn. The pro plate is
 a Coulomb belt (wedge.traction_law = "spring"): the contacts below the limit stick to it, those
 at the limit are held back by the wedge, and the base under the wedge transmits nearly mu_bp
-(eq. 4.1's drag transmitted 0.11 of 0.2 late in the main job).
+(eq. 4.1's drag transmitted 0.11 of 0.2 late in the main job). A singly-vergent wedge is read
+the same way: its floor stands still, and under the wedge the discs slide over it at its limit.
 
 The binary is $OROGEN_BINARY (CTest sets it), else build/release/orogen."""
 import os
@@ -62,6 +63,40 @@ class BasalTraction(unittest.TestCase):
         self.assertGreater(on_pro.sum(), 0)
         np.testing.assert_allclose(np.abs(ft) / fn, 0.2, rtol=1e-12)
         np.testing.assert_allclose(np.abs(fx) / fy, 0.2, rtol=1e-6)  # the base is flat: t along x, n along y
+
+
+class SinglyVergentFloor(unittest.TestCase):
+    """A short singly-vergent wedge on a floor of mu_b = 0.2 (about 10 s)."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp()
+        cls.folder = os.path.join(cls.tmp, "singly")
+        r = subprocess.run([BINARY, "run", os.path.join(ROOT, "examples", "singly_vergent.toml"), "--out", cls.folder,
+                            "--set", "singly.mu_b=0.2", "--set", "layer.length=60", "--set", "singly.shortening=1.5",
+                            "--set", "singly.outputs=6", "--set", "output.contacts=true", "--set",
+                            "output.progress=never", "--set", "output.vtp=false", "--threads", "1"],
+                           capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp)
+
+    def test_the_floor_under_the_wedge_transmits_at_most_mu_b(self):
+        config, late, series, table, slip = basal_traction.measure(self.folder)
+        self.assertEqual(basal_traction.base_friction(config), 0.2)
+        # the outputs after singly.steady_from (0.5) of the shortening that have a wedge
+        self.assertTrue((series["shortening"].iloc[late] >= 0.75 - 1e-9).all())
+        self.assertGreaterEqual(len(late), 2)
+        self.assertTrue(((table["mu_pro"] > 0) & (table["mu_pro"] <= 0.2 * (1 + 1e-6))).all(), table["mu_pro"])
+        self.assertTrue(table["mu_retro"].isna().all())  # no retro base
+        below, at = slip[slip.at_limit == 0].slip, slip[slip.at_limit == 1].slip
+        self.assertLess(abs(below.median()), 0.05)  # stuck to the floor
+        self.assertLess(at.median(), -0.3)  # sliding towards the foreland with the wedge
+        self.assertTrue(((slip.u >= 0) & (slip.u <= 1)).all())  # from the front (0) to the backstop (1)
+        at_limit = slip[slip.at_limit == 1]
+        np.testing.assert_allclose(at_limit.fx / at_limit.fy, 0.2, rtol=1e-6)  # the flat floor: mu_b fn along x
 
 
 if __name__ == "__main__":

@@ -7,8 +7,9 @@ of side h, docs/output-files.md) and, for every output of the last third of S wi
 takes the cells inside the pro-wedge: between one h0 behind the pro front and one h0 before the
 crest (the highest column), at least 1.5 cells below the surface of their column and above the
 lowest row of cells (which straddles the base), gathered into squares about h0 / 4 wide (a bulk
-stress needs many discs: a single cell of a few discs is mostly fluctuation). For each square,
-with compression positive:
+stress needs many discs: a single cell of a few discs is mostly fluctuation). A singly-vergent
+run is read the same way over its late outputs (orogen.analysis.traction), its wedge from one h0
+behind its front to one h0 before its backstop. For each square, with compression positive:
 
 - phi_mob: the mobilised friction angle, asin((s1 - s3) / (s1 + s3)); at failure it is the
   material's bulk friction angle, as critical-taper theory assumes everywhere in the wedge;
@@ -16,8 +17,11 @@ with compression positive:
   toward the foreland). Dahlen's homogeneous critical wedge has one psi throughout, psi_b =
   (asin(sin phi_b / sin phi) - phi_b) / 2 on a flat base of friction angle phi_b.
 
-Prints their medians and quartiles over all those squares, the theory's psi_b for the base's
-mu_bp at the peak and residual friction angles given, and the late pro taper of the series.
+Also the solid fraction inside the pro-wedge and in the layer one to three h0 ahead of its
+front (the material after accretion against the incoming layer). Prints the medians and
+quartiles of phi_mob and psi over all those squares, the solid fractions, the theory's psi_b
+for the base's mu_bp at the peak and residual friction angles given with the critical taper
+they give, and the late pro taper of the series.
 
     python3 -m orogen.analysis.stress RUN_DIR [--block D] [--phi 35.6,24.6]
 """
@@ -28,7 +32,8 @@ import h5py
 import numpy as np
 import pandas as pd
 
-from .traction import late_outputs
+from .surface import critical_taper_deg
+from .traction import base_friction, is_singly, late_outputs, pro_span
 
 
 def psi_base(phi_deg, mu_b):
@@ -52,22 +57,35 @@ def blocks(a, b):
     return a[:rows, :columns].reshape(rows // b, b, columns // b, b).mean(axis=(1, 3))
 
 
-def pro_wedge_cells(g, h0, dp, block):
-    """(phi_mob, psi) in degrees of the pro-wedge's interior blocks of one output: the grid's
-    cells (additive: a block's stress is the mean of its cells') gathered into squares about
-    `block` d wide, so that each holds enough discs for a bulk stress."""
+def regions(g, h0, span):
+    """The stress grid's cells (boolean arrays of its shape) inside the pro-wedge, and in the
+    layer ahead of it (from three to one h0 before the front), both above the lowest row and
+    1.5 cells below the surface of their column; the grid's (cell, x0, y0). `span` is (front,
+    back) in h0, the back None for the crest near the S-point."""
     grid = g["stress_grid"]
     h, x0, y0 = float(grid.attrs["cell"]), float(grid.attrs["x0"]), float(grid.attrs["y0"])
-    pxx, pyy = -grid["xx"][()], -grid["yy"][()]
-    pxy = -0.5 * (grid["xy"][()] + grid["yx"][()])
-    rows, columns = pxx.shape
+    rows, columns = grid["xx"].shape
     x, y, r = g["x"][()], g["y"][()], g["radius"][()]
     surface = surface_of_columns(x, y + r, x0, h, columns)
     xc = x0 + (np.arange(columns) + 0.5) * h
     yc = y0 + (np.arange(rows) + 0.5) * h
-    crest = xc[np.nanargmax(np.where(xc < 2 * h0, surface, -np.inf))]
+    front, back = span
+    back = xc[np.nanargmax(np.where(xc < 2 * h0, surface, -np.inf))] if back is None else back * h0
     X, Y = np.meshgrid(xc, yc)
-    inside = (X > dp * h0 + h0) & (X < crest - h0) & (Y - 0.5 * h > y0 + h) & (Y < surface[None, :] - 1.5 * h)
+    deep = (Y - 0.5 * h > y0 + h) & (Y < surface[None, :] - 1.5 * h)
+    inside = (X > front * h0 + h0) & (X < back - h0) & deep
+    ahead = (X > front * h0 - 3 * h0) & (X < front * h0 - h0) & deep
+    return inside, ahead, (h, x0, y0)
+
+
+def pro_wedge_cells(g, h0, span, block):
+    """(phi_mob, psi) in degrees of the pro-wedge's interior blocks of one output: the grid's
+    cells (additive: a block's stress is the mean of its cells') gathered into squares about
+    `block` d wide, so that each holds enough discs for a bulk stress."""
+    grid = g["stress_grid"]
+    pxx, pyy = -grid["xx"][()], -grid["yy"][()]
+    pxy = -0.5 * (grid["xy"][()] + grid["yx"][()])
+    inside, _, (h, _, _) = regions(g, h0, span)
     b = max(1, int(round(block / h)))
     full = blocks(inside.astype(float), b) == 1.0
     pxx, pyy, pxy = blocks(pxx, b)[full], blocks(pyy, b)[full], blocks(pxy, b)[full]
@@ -82,18 +100,42 @@ def pro_wedge_cells(g, h0, dp, block):
     return phi_mob, psi
 
 
+def solid_fractions(g, h0, span):
+    """(inside the pro-wedge, in the layer ahead of it): the area of the discs whose centres lie
+    in the region's cells over the cells' area (NaN for a region of no cells): how much the
+    material has dilated or compacted since it was the incoming layer."""
+    inside, ahead, (h, x0, y0) = regions(g, h0, span)
+    x, y, r = g["x"][()], g["y"][()], g["radius"][()]
+    row, col = np.floor((y - y0) / h).astype(int), np.floor((x - x0) / h).astype(int)
+    on_grid = (row >= 0) & (row < inside.shape[0]) & (col >= 0) & (col < inside.shape[1])
+    area = np.pi * r[on_grid] ** 2
+    row, col = row[on_grid], col[on_grid]
+
+    def fraction(mask):
+        return area[mask[row, col]].sum() / (mask.sum() * h * h) if mask.any() else np.nan
+
+    return fraction(inside), fraction(ahead)
+
+
 def measure(run, block=None):
+    """(configuration, the late outputs' series rows with their solid fractions `solid_wedge`
+    and `solid_ahead`, the interior squares' phi_mob and psi)."""
     series, h0, config, late = late_outputs(run)
     block = 0.25 * h0 if block is None else block
-    cells = []
+    cells, fractions = [], []
     with h5py.File(f"{run}/snapshots.h5", "r") as f:
         for k in late:
             g = f["output_%06d" % k]
             if "stress_grid" not in g:
                 raise SystemExit(f"{run}: output {k} has no stress grid (run with --set output.stress_grid=2)")
-            phi_mob, psi = pro_wedge_cells(g, h0, series["Dp"].iloc[k], block)
+            front, back = pro_span(series, config, k)
+            span = (front, back if is_singly(config) else None)
+            phi_mob, psi = pro_wedge_cells(g, h0, span, block)
             cells += [{"output": k, "phi_mob": a, "psi": b} for a, b in zip(phi_mob, psi)]
-    return config, series.iloc[late], pd.DataFrame(cells)
+            fractions.append(solid_fractions(g, h0, span))
+    late_rows = series.iloc[late].copy()
+    late_rows["solid_wedge"], late_rows["solid_ahead"] = zip(*fractions)
+    return config, late_rows, pd.DataFrame(cells)
 
 
 def main():
@@ -104,16 +146,22 @@ def main():
                    help="peak and residual bulk friction angles of the material [deg] (default: the clusters')")
     args = p.parse_args()
     config, late, cells = measure(args.run, args.block)
-    mu_bp = config["wedge"]["mu_bp"]
+    mu_bp = base_friction(config)
     if cells.empty:
         raise SystemExit(f"{args.run}: no interior cells in the pro-wedge (is the wedge thicker than a few cells?)")
     print(f"{args.run}: {len(late)} outputs, {len(cells)} interior pro-wedge squares, mu_bp {mu_bp}")
     for name in ("phi_mob", "psi"):
         q = cells[name].quantile([0.25, 0.5, 0.75])
         print(f"  {name}: median {q[0.5]:.1f} deg, quartiles {q[0.25]:.1f}-{q[0.75]:.1f}")
+    print(f"  solid fraction: inside the pro-wedge {late['solid_wedge'].mean():.3f}, in the layer 1-3 h0 ahead of "
+          f"its front {late['solid_ahead'].mean():.3f}")
     for phi in (float(v) for v in args.phi.split(",")):
-        print(f"  critical wedge of phi {phi:.1f} deg on mu_bp {mu_bp}: phi_mob {phi:.1f}, psi_b {psi_base(phi, mu_bp):.1f} deg")
-    print(f"  late pro taper alpha {late['alpha'].mean():.2f} deg, H {late['H'].mean():.2f} h0")
+        print(f"  critical wedge of phi {phi:.1f} deg on mu_b {mu_bp}: phi_mob {phi:.1f}, psi_b {psi_base(phi, mu_bp):.1f} deg, "
+              f"taper {critical_taper_deg(phi, mu_bp):.1f} deg")
+    if is_singly(config):
+        print(f"  late taper {late['taper'].mean():.2f} deg, height {late['height'].mean():.2f} h0")
+    else:
+        print(f"  late pro taper alpha {late['alpha'].mean():.2f} deg, H {late['H'].mean():.2f} h0")
 
 
 if __name__ == "__main__":
