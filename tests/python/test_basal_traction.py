@@ -25,19 +25,26 @@ from orogen.analysis import traction as basal_traction  # noqa: E402
 BINARY = os.environ.get("OROGEN_BINARY", os.path.join(ROOT, "build", "release", "orogen"))
 
 
-class BasalTraction(unittest.TestCase):
+class RunOnce(unittest.TestCase):
+    """A class whose tests read one run made once, with its contact forces, in a temporary folder."""
+    ARGS = []
+
     @classmethod
     def setUpClass(cls):
         cls.tmp = tempfile.mkdtemp()
-        cls.folder = os.path.join(cls.tmp, "wedge")
-        r = subprocess.run([BINARY, "run", "--out", cls.folder, "--set", "wedge.s_end=1.5", "--set", "wedge.outputs=6",
-                            "--set", "output.contacts=true", "--set", "output.progress=never", "--set",
-                            "output.vtp=false", "--threads", "1"], capture_output=True, text=True)
+        cls.folder = os.path.join(cls.tmp, "run")
+        r = subprocess.run([BINARY, "run", *cls.ARGS, "--out", cls.folder, "--set", "output.contacts=true", "--set",
+                            "output.progress=never", "--set", "output.vtp=false", "--threads", "1"],
+                           capture_output=True, text=True)
         assert r.returncode == 0, r.stderr
 
     @classmethod
     def tearDownClass(cls):
         shutil.rmtree(cls.tmp)
+
+
+class BasalTraction(RunOnce):
+    ARGS = ["--set", "wedge.s_end=1.5", "--set", "wedge.outputs=6"]
 
     def test_the_bases_transmit_at_most_their_coulomb_limit(self):
         config, late, _, table, slip = basal_traction.measure(self.folder)
@@ -65,23 +72,10 @@ class BasalTraction(unittest.TestCase):
         np.testing.assert_allclose(np.abs(fx) / fy, 0.2, rtol=1e-6)  # the base is flat: t along x, n along y
 
 
-class SinglyVergentFloor(unittest.TestCase):
+class SinglyVergentFloor(RunOnce):
     """A short singly-vergent wedge on a floor of mu_b = 0.2 (about 10 s)."""
-
-    @classmethod
-    def setUpClass(cls):
-        cls.tmp = tempfile.mkdtemp()
-        cls.folder = os.path.join(cls.tmp, "singly")
-        r = subprocess.run([BINARY, "run", os.path.join(ROOT, "examples", "singly_vergent.toml"), "--out", cls.folder,
-                            "--set", "singly.mu_b=0.2", "--set", "layer.length=60", "--set", "singly.shortening=1.5",
-                            "--set", "singly.outputs=6", "--set", "output.contacts=true", "--set",
-                            "output.progress=never", "--set", "output.vtp=false", "--threads", "1"],
-                           capture_output=True, text=True)
-        assert r.returncode == 0, r.stderr
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.tmp)
+    ARGS = [os.path.join(ROOT, "examples", "singly_vergent.toml"), "--set", "singly.mu_b=0.2", "--set",
+            "layer.length=60", "--set", "singly.shortening=1.5", "--set", "singly.outputs=6"]
 
     def test_the_floor_under_the_wedge_transmits_at_most_mu_b(self):
         config, late, series, table, slip = basal_traction.measure(self.folder)
