@@ -6,7 +6,8 @@ singly-vergent wedge), over its late outputs (orogen.analysis.traction): the fri
 base transmits under the wedge and the share of its contacts at the Coulomb limit, the
 interior's mobilised friction angle and the angle of s1 to the base (medians over squares of
 h0 / 4, orogen.analysis.stress), the solid fraction inside the wedge and in the layer ahead of
-it, and the surface slope; beside them Dahlen's critical taper and
+it, and the surface slope (the least-squares fit: a singly-vergent wedge's from its front to
+its backstop, a wedge's pro slope `alpha_fit`); beside them Dahlen's critical taper and
 s1 angle for that interior friction on that transmitted base friction, and for the material's
 residual friction (--phi) on the base's own coefficient. One row per run, then the mean and the
 standard deviation over the runs of each resolution.
@@ -44,7 +45,7 @@ def row(run, phi_residual):
         "at limit": table["at_limit_pro"].mean(),
         "phi_mob": phi_mob,
         "psi": psi,
-        "taper": tail["taper" if singly else "alpha"].mean(),
+        "taper": tail["taper" if singly else "alpha_fit"].mean(),  # the surface fit, front to backstop or crest
         "solid fraction: wedge / ahead": f"{packed['solid_wedge'].mean():.3f} / {packed['solid_ahead'].mean():.3f}",
         "taper front / back half": (f"{tail['taper_front'].mean():.1f} / {tail['taper_back'].mean():.1f}"
                                     if singly else ""),
