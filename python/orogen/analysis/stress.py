@@ -78,14 +78,14 @@ def regions(g, h0, span):
     return inside, ahead, (h, x0, y0)
 
 
-def pro_wedge_cells(g, h0, span, block):
-    """(phi_mob, psi) in degrees of the pro-wedge's interior blocks of one output: the grid's
-    cells (additive: a block's stress is the mean of its cells') gathered into squares about
-    `block` d wide, so that each holds enough discs for a bulk stress."""
+def pro_wedge_cells(g, region, block):
+    """(phi_mob, psi) in degrees of the pro-wedge's interior blocks of one output (`region`:
+    regions()): the grid's cells (additive: a block's stress is the mean of its cells') gathered
+    into squares about `block` d wide, so that each holds enough discs for a bulk stress."""
     grid = g["stress_grid"]
     pxx, pyy = -grid["xx"][()], -grid["yy"][()]
     pxy = -0.5 * (grid["xy"][()] + grid["yx"][()])
-    inside, _, (h, _, _) = regions(g, h0, span)
+    inside, _, (h, _, _) = region
     b = max(1, int(round(block / h)))
     full = blocks(inside.astype(float), b) == 1.0
     pxx, pyy, pxy = blocks(pxx, b)[full], blocks(pyy, b)[full], blocks(pxy, b)[full]
@@ -100,11 +100,11 @@ def pro_wedge_cells(g, h0, span, block):
     return phi_mob, psi
 
 
-def solid_fractions(g, h0, span):
-    """(inside the pro-wedge, in the layer ahead of it): the area of the discs whose centres lie
-    in the region's cells over the cells' area (NaN for a region of no cells): how much the
-    material has dilated or compacted since it was the incoming layer."""
-    inside, ahead, (h, x0, y0) = regions(g, h0, span)
+def solid_fractions(g, region):
+    """(inside the pro-wedge, in the layer ahead of it; `region`: regions()): the area of the
+    discs whose centres lie in the region's cells over the cells' area (NaN for a region of no
+    cells): how much the material has dilated or compacted since it was the incoming layer."""
+    inside, ahead, (h, x0, y0) = region
     x, y, r = g["x"][()], g["y"][()], g["radius"][()]
     row, col = np.floor((y - y0) / h).astype(int), np.floor((x - x0) / h).astype(int)
     on_grid = (row >= 0) & (row < inside.shape[0]) & (col >= 0) & (col < inside.shape[1])
@@ -130,9 +130,10 @@ def measure(run, block=None):
                 raise SystemExit(f"{run}: output {k} has no stress grid (run with --set output.stress_grid=2)")
             front, back = pro_span(series, config, k)
             span = (front, back if is_singly(config) else None)
-            phi_mob, psi = pro_wedge_cells(g, h0, span, block)
+            region = regions(g, h0, span)
+            phi_mob, psi = pro_wedge_cells(g, region, block)
             cells += [{"output": k, "phi_mob": a, "psi": b} for a, b in zip(phi_mob, psi)]
-            fractions.append(solid_fractions(g, h0, span))
+            fractions.append(solid_fractions(g, region))
     late_rows = series.iloc[late].copy()
     late_rows["solid_wedge"], late_rows["solid_ahead"] = zip(*fractions)
     return config, late_rows, pd.DataFrame(cells)
