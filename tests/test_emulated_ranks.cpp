@@ -19,6 +19,18 @@ using testing::mixed_heap;
 using testing::same_bits;
 using testing::state_of;
 
+// Three shares whose bounds move at every list build, far from where the pairs would cut them:
+// at each build much of the state changes keeper.
+ThreadSplit moving_cut(const NeighborList& L, const Discs& d, const Clusters& c, int ranks) {
+  EXPECT_EQ(ranks, 3);
+  const auto chunks = static_cast<std::ptrdiff_t>(L.chunk_start.size()) - 1;
+  const auto n = static_cast<std::ptrdiff_t>(d.size()), nc = static_cast<std::ptrdiff_t>(c.size());
+  const auto shift = static_cast<std::ptrdiff_t>(L.builds % 5);
+  return {{0, chunks / 3 + shift, 2 * chunks / 3 - shift, chunks},
+          {0, n / 3 + 13 * shift, 2 * n / 3 - 7 * shift, n},
+          {0, nc / 3 + 3 * shift, 2 * nc / 3 - 5 * shift, nc}};
+}
+
 // Steps a copy of `start` one process's way and over `ranks` emulated ranks, comparing every
 // `every` steps.
 void expect_same_run(const World& start, int ranks, RankCut cut, int steps, int every) {
@@ -64,11 +76,13 @@ TEST(EmulatedRanks, LayeredCrustStepsAsOneProcess) {
   EXPECT_LT(broken, bonds / 2) << "most bonds broke: the bonds' forces are hardly tested";
   for (int ranks : {2, 3}) expect_same_run(start, ranks, {}, 300, 25);
   for (int ranks : {2, 3}) expect_same_run(start, ranks, lopsided_cut, 300, 25);
+  expect_same_run(start, 3, moving_cut, 300, 25);  // slip migrates with the motion
 }
 
 TEST(EmulatedRanks, LopsidedCutsStepAsOneProcess) {
   const World start = mixed_heap();
   for (int ranks : {2, 3}) expect_same_run(start, ranks, lopsided_cut, 300, 25);
+  expect_same_run(start, 3, moving_cut, 300, 25);  // a cut that moves at every build: the state migrates
 }
 
 // Every exchange matters: left out, it leaves a stale value in some copy and the bits differ.
@@ -101,6 +115,48 @@ TEST(EmulatedRanks, EachExchangeLeftOutChangesTheResult) {
   EXPECT_TRUE(same_bits(state_of(many.gathered()), expected));
 }
 
+// A list build over ranks reads every rank's positions alone; the rest of the state moves to its
+// new keeper after it (parallel/migration.hpp). Left out, the copies keep stale motion and
+// histories where the cut or the sort moved them, and the bits differ; and the builds' gathers
+// carry much less than the whole state.
+TEST(EmulatedRanks, MigrationAfterABuildMatters) {
+  const World start = mixed_heap();
+  World one = start;
+  const std::uint64_t builds = one.neighbors().builds;
+  int steps = 0;
+  constexpr std::uint64_t kBuilds = 6;
+  while (one.neighbors().builds < builds + kBuilds) {  // each build from the positions
+    one.advance();
+    ++steps;
+  }
+  const std::vector<double> expected = state_of(one);
+  for (const bool drop : {false, true}) {
+    EmulatedRanks many(start, 3, moving_cut);
+    if (drop) many.drop_for_testing(Exchange::Migration);
+    bool same = false;
+    try {
+      for (int s = 0; s < steps; ++s) many.advance();
+      same = same_bits(state_of(many.gathered()), expected);
+    } catch (const InstabilityError&) {
+    }
+    EXPECT_EQ(same, !drop) << (drop ? "migration left out, yet the same bits" : "not the bits of one process");
+    std::uint64_t migrated = 0, gathered = 0, position_gathers = 0;
+    for (int r = 0; r < many.ranks(); ++r) {
+      migrated += many.rank(r).serial_work().migrated_values;
+      gathered += many.rank(r).serial_work().gathered_values;
+      position_gathers += many.rank(r).serial_work().position_gathers;
+    }
+    EXPECT_EQ(position_gathers, 3 * kBuilds) << "each rank gathers the positions for each build";
+    std::cout << migrated << " values migrated\n";
+    if (!drop) {
+      EXPECT_GT(migrated, 0u) << "nothing migrated: the test does not test it";
+    }
+    // Positions: 2 doubles a disc and body, against about 6.5 a disc, 11 a body and the histories.
+    const std::size_t whole = kBuilds * 3 * 2 * (8 * start.discs().size() + 11 * start.clusters().size());
+    EXPECT_LT(gathered, whole / 2) << "the builds' gathers should carry the positions, not the whole state";
+  }
+}
+
 TEST(EmulatedRanks, RefusesWhatItDoesNotRunYet) {
   World with_hook = mixed_heap(2, 10, 10);
   with_hook.hooks().add(Stage::AfterIntegration, "test.hook", [](World&) {});
@@ -129,8 +185,11 @@ void print_volume(const World& start, int ranks, int steps) {
   std::size_t all = 0;
   for (int r = 0; r < ranks; ++r)
     for (int q = 0; q < ranks; ++q) all += many.mailbox().values_sent(r, q);
-  std::cout << "  all buffers, builds' gathers included: " << 8 * all / static_cast<std::size_t>(steps)
-            << " bytes a step on average over " << steps << " steps\n";
+  std::uint64_t migrated = 0;
+  for (int r = 0; r < ranks; ++r) migrated += many.rank(r).serial_work().migrated_values;
+  std::cout << "  all buffers, builds' gathers and migrations included: " << 8 * all / static_cast<std::size_t>(steps)
+            << " bytes a step on average over " << steps << " steps, of which migrations "
+            << 8 * migrated / static_cast<std::size_t>(steps) << "\n";
 }
 
 TEST(EmulatedRanks, ExchangeVolume) {

@@ -6,6 +6,17 @@
 namespace orogen {
 namespace {
 
+// A bond's state is its first disc's integrating rank's (both sides step a bond across the cut alike).
+template <class F>
+void for_each_owned_bond_value(RankAccess& a, const ExchangePlan& plan, int owner, F&& f) {
+  Bonds& B = a.bonds;
+  const std::size_t acting = B.id_a.empty() ? 0 : a.bond_scratch.acting;
+  for (std::size_t k = 0; k < acting; ++k) {
+    if (plan.step_rank[B.a[k]] != owner) continue;
+    f(B.fn[k]); f(B.fs[k]); f(B.moment[k]);
+  }
+}
+
 // Calls f(value) for each value rank `owner` keeps current (doubles, and the wall contacts'
 // flags), in one order for packing and unpacking.
 template <class F>
@@ -32,13 +43,7 @@ void for_each_owned_value(RankAccess& a, const ExchangePlan& plan, int owner, F&
       if (!roll.empty()) f(roll[p]);
     }
   }
-  // A bond's state is its first disc's integrating rank's (both sides step a bond across the cut alike).
-  Bonds& B = a.bonds;
-  const std::size_t acting = B.id_a.empty() ? 0 : a.bond_scratch.acting;
-  for (std::size_t k = 0; k < acting; ++k) {
-    if (plan.step_rank[B.a[k]] != owner) continue;
-    f(B.fn[k]); f(B.fs[k]); f(B.moment[k]);
-  }
+  for_each_owned_bond_value(a, plan, owner, f);
   WallContacts& wc = a.contacts.walls;
   for (std::size_t k = 0; k < wc.size(); ++k) {
     if (plan.wall_rank[wc.disc[k]] != owner) continue;
@@ -57,6 +62,14 @@ void for_each_owned_position(RankAccess& a, const ExchangePlan& plan, int owner,
   for (auto k = static_cast<std::size_t>(plan.cut.body[r]); k < static_cast<std::size_t>(plan.cut.body[r + 1]); ++k) {
     f(c.x[k]); f(c.y[k]);
   }
+}
+
+// What a list build without the whole state reads of rank `owner`'s: its positions, and its
+// bonds' state (the bonds are re-ordered after a build; gathered whole, they need no migration).
+template <class F>
+void for_each_build_value(RankAccess& a, const ExchangePlan& plan, int owner, F&& f) {
+  for_each_owned_position(a, plan, owner, f);
+  for_each_owned_bond_value(a, plan, owner, f);
 }
 
 template <class Each>
@@ -86,6 +99,7 @@ constexpr auto kState = [](RankAccess& a, const ExchangePlan& p, int owner, auto
 constexpr auto kPositions = [](RankAccess& a, const ExchangePlan& p, int owner, auto&& f) {
   for_each_owned_position(a, p, owner, f);
 };
+constexpr auto kBuild = [](RankAccess& a, const ExchangePlan& p, int owner, auto&& f) { for_each_build_value(a, p, owner, f); };
 
 }  // namespace
 
@@ -110,5 +124,15 @@ void unpack_owned_positions(RankAccess& a, const ExchangePlan& plan, int owner, 
 std::size_t owned_positions_size(RankAccess& a, const ExchangePlan& plan, int owner) {
   return count(a, plan, owner, kPositions);
 }
+
+void pack_build_state(RankAccess& a, const ExchangePlan& plan, int owner, std::vector<double>& out) {
+  pack(a, plan, owner, out, kBuild);
+}
+
+void unpack_build_state(RankAccess& a, const ExchangePlan& plan, int owner, std::span<const double> in) {
+  unpack(a, plan, owner, in, kBuild);
+}
+
+std::size_t build_state_size(RankAccess& a, const ExchangePlan& plan, int owner) { return count(a, plan, owner, kBuild); }
 
 }  // namespace orogen

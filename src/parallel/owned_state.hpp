@@ -1,8 +1,9 @@
 #pragma once
 // The state a rank alone keeps current in its copy of the world between list builds: the
 // motion of the discs it integrates, its bodies, the histories of its chunks' pairs and of its
-// discs' wall contacts. Sent whole to every rank before a list build (every copy then builds
-// the same list), and to one place to read the run out.
+// discs' wall contacts. Sent whole to every rank where a stage reads the whole world, and to one
+// place to read the run out; before a list build only the positions and bonds go to every rank,
+// the rest moves to its new keeper after the build (parallel/migration.hpp).
 #include <span>
 #include <vector>
 
@@ -22,5 +23,11 @@ std::size_t owned_state_size(RankAccess& world, const ExchangePlan& plan, int ow
 void pack_owned_positions(RankAccess& world, const ExchangePlan& plan, int owner, std::vector<double>& out);
 void unpack_owned_positions(RankAccess& world, const ExchangePlan& plan, int owner, std::span<const double> in);
 std::size_t owned_positions_size(RankAccess& world, const ExchangePlan& plan, int owner);
+
+// What a list build made without the whole state reads of rank `owner`'s (parallel/migration.hpp):
+// its positions and its bonds' state.
+void pack_build_state(RankAccess& world, const ExchangePlan& plan, int owner, std::vector<double>& out);
+void unpack_build_state(RankAccess& world, const ExchangePlan& plan, int owner, std::span<const double> in);
+std::size_t build_state_size(RankAccess& world, const ExchangePlan& plan, int owner);
 
 }  // namespace orogen

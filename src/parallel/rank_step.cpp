@@ -67,6 +67,9 @@ void RankStep::post(Phase phase) {
     case Phase::Build:
       post_build();
       break;
+    case Phase::Migration:
+      if (migrate_ && !dropped(Exchange::Migration)) send_migration();
+      break;
     case Phase::Ghosts:
       if (dropped(Exchange::Ghosts)) break;
       for (int q = 0; q < ranks_; ++q) {
@@ -116,6 +119,9 @@ void RankStep::take(Phase phase) {
     case Phase::Build:
       take_build();
       break;
+    case Phase::Migration:
+      if (migrate_ && !dropped(Exchange::Migration)) receive_migration();
+      break;
     case Phase::Ghosts:
       if (dropped(Exchange::Ghosts)) break;
       for (int q = 0; q < ranks_; ++q) {
@@ -154,28 +160,63 @@ void RankStep::post_build() {
   check_steppable_over_ranks(access_.world);
   // Every copy decides alike: the largest displacement was reduced over the ranks.
   build_ = access_.world.contacts_stale();
-  if (build_ && !whole_) {
+  // A copy made whole by a stage builds from its own state; otherwise the build reads every
+  // rank's positions (and bonds), and the rest of the state migrates after it.
+  migrate_ = build_ && !whole_;
+  if (migrate_) {
     Stopwatch watch(serial_.gather_seconds);
-    send_owned_state();
+    buffer_.clear();
+    pack_build_state(access_, plan_, rank_, buffer_);
+    send_gathered(true);
   }
 }
 
 void RankStep::take_build() {
-  if (build_ && !whole_) {
+  if (migrate_) {
     Stopwatch watch(serial_.gather_seconds);
-    receive_owned_states();
+    for (int q = 0; q < ranks_; ++q) {
+      if (q == rank_) continue;
+      buffer_.resize(build_state_size(access_, plan_, q));
+      transport_->receive(q, buffer_);
+      unpack_build_state(access_, plan_, q, buffer_);
+    }
+    keepers_ = record_keepers(access_, plan_);  // before the build re-orders what they name
   }
   if (build_) {
-    // The whole state in every copy: each builds the list of one process, sort included.
+    // Every copy builds the list of one process, sort included: what the build reads (the
+    // positions, the masses) is current in every copy.
     Stopwatch watch(serial_.build_seconds);
     access_.rebuild_if_stale();
-    whole_ = true;
     ++serial_.builds;
   }
   // The bonds re-ordered (after a build, or new bonds): their routes too.
   const bool bonds_moved = access_.prepare_bonds();
   if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds || bonds_moved) make_plan();
+  if (migrate_) migration_ = find_migration(access_, keepers_, plan_);
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
+}
+
+void RankStep::send_migration() {
+  Stopwatch watch(serial_.gather_seconds);
+  const auto out = pack_migration(access_, migration_, plan_, rank_);
+  for (int q = 0; q < ranks_; ++q) {
+    const auto& values = out[static_cast<std::size_t>(q)];
+    if (q == rank_ || values.empty()) continue;
+    transport_->send(q, values);
+    serial_.migrated_values += values.size();
+  }
+}
+
+void RankStep::receive_migration() {
+  Stopwatch watch(serial_.gather_seconds);
+  const auto sizes = migration_sizes(access_, migration_, plan_, rank_);
+  std::vector<std::vector<double>> received(static_cast<std::size_t>(ranks_));
+  for (int q = 0; q < ranks_; ++q) {
+    auto& values = received[static_cast<std::size_t>(q)];
+    values.resize(sizes[static_cast<std::size_t>(q)]);
+    if (q != rank_ && !values.empty()) transport_->receive(q, values);
+  }
+  unpack_migration(access_, migration_, plan_, rank_, received);
 }
 
 void RankStep::make_whole() {
@@ -191,11 +232,7 @@ void RankStep::gather_positions() {
   Stopwatch watch(serial_.gather_seconds);
   buffer_.clear();
   pack_owned_positions(access_, plan_, rank_, buffer_);
-  for (int q = 0; q < ranks_; ++q)
-    if (q != rank_) transport_->send(q, buffer_);
-  ++serial_.gathers;
-  ++serial_.position_gathers;
-  serial_.gathered_values += buffer_.size() * static_cast<std::size_t>(ranks_ - 1);
+  send_gathered(true);
   for (int q = 0; q < ranks_; ++q) {
     if (q == rank_) continue;
     buffer_.resize(owned_positions_size(access_, plan_, q));
@@ -207,9 +244,14 @@ void RankStep::gather_positions() {
 void RankStep::send_owned_state() {
   buffer_.clear();
   pack_owned_state(access_, plan_, rank_, buffer_);
+  send_gathered(false);
+}
+
+void RankStep::send_gathered(bool positions) {
   for (int q = 0; q < ranks_; ++q)
     if (q != rank_) transport_->send(q, buffer_);
   ++serial_.gathers;
+  if (positions) ++serial_.position_gathers;
   serial_.gathered_values += buffer_.size() * static_cast<std::size_t>(ranks_ - 1);
 }
 

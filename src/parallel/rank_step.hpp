@@ -4,8 +4,11 @@
 // cut into phases at the places where a thread of one process would read what another wrote;
 // each phase first computes and sends (post), then receives (take). Every floating-point
 // operation then has the operands, and the order, of one process: the same bits.
-//   Build        a stale list: every rank's owned state to every rank, the same build in each
-//                copy, a new cut and plan (exchange_plan.hpp)
+//   Build        a stale list: every rank's positions (and bonds' state) to every rank, the same
+//                build in each copy, a new cut and plan (exchange_plan.hpp); where the copy was
+//                whole already (a stage gathered it), no exchange
+//   Migration    after a build from positions: the motion, body state and contact histories each
+//                rank kept current, to the rank that keeps them under the new plan (migration.hpp)
 //   Ghosts       the motion of the discs this rank reads but another moved
 //   EvenPairs    the even chunks; their running sums to the odd chunk's rank
 //   OddPairs     the odd chunks; whole pair sums to the wall owner of a disc on a wall
@@ -29,21 +32,23 @@
 #include "boundary/wall_forces.hpp"
 #include "contact/pair_forces.hpp"
 #include "parallel/exchange_plan.hpp"
+#include "parallel/migration.hpp"
 #include "parallel/rank_access.hpp"
 #include "parallel/rank_transport.hpp"
 
 namespace orogen {
 
-enum class Phase : std::uint8_t { Build, Ghosts, EvenPairs, OddPairs, Walls, Integration };
-inline constexpr std::array<Phase, 6> kStepPhases = {Phase::Build,    Phase::Ghosts, Phase::EvenPairs,
-                                                     Phase::OddPairs, Phase::Walls,  Phase::Integration};
+enum class Phase : std::uint8_t { Build, Migration, Ghosts, EvenPairs, OddPairs, Walls, Integration };
+inline constexpr std::array<Phase, 7> kStepPhases = {Phase::Build,    Phase::Migration, Phase::Ghosts,
+                                                     Phase::EvenPairs, Phase::OddPairs, Phase::Walls,
+                                                     Phase::Integration};
 
 // std::invalid_argument naming what a step over ranks does not run yet (hooks inside the step
 // other than a pin). Check the world given, not a copy: a copy drops its hooks.
 void check_steppable_over_ranks(const World& world);
 
 // The exchanges a test may drop, to show that the results then differ.
-enum class Exchange : std::uint8_t { Ghosts, PartialSums, PairSums, WholeSums };
+enum class Exchange : std::uint8_t { Ghosts, PartialSums, PairSums, WholeSums, Migration };
 
 // How the step is cut into ranks after a build: split_threads with one share per rank unless
 // given (tests give lopsided cuts).
@@ -67,11 +72,12 @@ class RankStep {
   void gather_positions();
 
   // What a run over ranks costs beyond its slab's work, for the log: the gathers of every
-  // rank's state (before list builds and in make_whole), the doubles this rank sent in them,
-  // and the seconds it spent in them and in building the whole list.
+  // rank's state (its positions before list builds, the whole in make_whole), the doubles this
+  // rank sent in them, the doubles it sent in migrations after builds, and the seconds it spent
+  // in gathers and migrations and in building the whole list.
   struct SerialWork {
-    std::uint64_t gathers = 0, gathered_values = 0, builds = 0;
-    std::uint64_t position_gathers = 0;  // of them, gathers of the positions alone
+    std::uint64_t gathers = 0, gathered_values = 0, builds = 0, migrated_values = 0;
+    std::uint64_t position_gathers = 0;  // of them, gathers of the positions (and bonds) alone
     double gather_seconds = 0, build_seconds = 0;
   };
   const SerialWork& serial_work() const { return serial_; }
@@ -86,9 +92,13 @@ class RankStep {
   void post_build();
   void take_build();
   void make_plan();
+  void send_migration();
+  void receive_migration();
   // This rank's owned state to every other rank; theirs into this copy.
   void send_owned_state();
   void receive_owned_states();
+  // buffer_ to every other rank, counted as a gather (of the positions, or of the whole state).
+  void send_gathered(bool positions);
   // The discs' force sums along `routes`, out of this rank, or into it (set, not added).
   void send_sums(const Routes& routes);
   void receive_sums(const Routes& routes);
@@ -113,8 +123,11 @@ class RankStep {
   RankCut cut_;
   int rank_, ranks_;
   ExchangePlan plan_;
-  bool whole_ = true;  // this copy holds every rank's current state (a fresh copy, or just built)
+  bool whole_ = true;  // this copy holds every rank's current state (a fresh copy, gathered by a stage, or built from it)
   bool build_ = false;  // this step rebuilds the list
+  bool migrate_ = false;  // ... from the positions alone: the state then migrates (migration.hpp)
+  PreviousKeepers keepers_;
+  Migration migration_;
   double max2_ = 0;
   double not_finite_ = 0;
   ThreadSplit threads_cut_;
@@ -133,7 +146,7 @@ class RankStep {
     double x, y, mode;
   };
   std::vector<FoundBreak> breaks_found_, breaks_all_;
-  std::array<bool, 4> dropped_{};
+  std::array<bool, 5> dropped_{};
   SerialWork serial_;
 };
 
