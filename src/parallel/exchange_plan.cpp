@@ -9,14 +9,6 @@
 namespace orogen {
 namespace {
 
-// By item, the rank whose range [bounds[r], bounds[r+1]) holds it.
-std::vector<std::int32_t> rank_of_ranges(const std::vector<std::ptrdiff_t>& bounds, std::size_t items) {
-  std::vector<std::int32_t> rank(items, kNoRank);
-  for (std::size_t r = 0; r + 1 < bounds.size(); ++r)
-    for (std::ptrdiff_t i = bounds[r]; i < bounds[r + 1]; ++i) rank[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(r);
-  return rank;
-}
-
 // The rank of each disc's even and odd chunk.
 void chunk_ranks(const NeighborList& L, const ThreadSplit& cut, std::size_t discs, ExchangePlan& plan) {
   const std::size_t chunks = L.chunk_start.empty() ? 0 : L.chunk_start.size() - 1;
@@ -40,6 +32,13 @@ void chunk_ranks(const NeighborList& L, const ThreadSplit& cut, std::size_t disc
 }
 
 }  // namespace
+
+std::vector<std::int32_t> rank_of_ranges(const std::vector<std::ptrdiff_t>& bounds, std::size_t items) {
+  std::vector<std::int32_t> rank(items, kNoRank);
+  for (std::size_t r = 0; r + 1 < bounds.size(); ++r)
+    for (std::ptrdiff_t i = bounds[r]; i < bounds[r + 1]; ++i) rank[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(r);
+  return rank;
+}
 
 std::size_t Routes::total() const {
   std::size_t n = 0;

@@ -52,6 +52,10 @@ struct ExchangePlan {
   Routes whole_sums;    // after the walls: whole sums to the rank that integrates the disc
 };
 
+// By item, the rank whose range [bounds[r], bounds[r+1]) holds it (kNoRank outside them): a
+// ThreadSplit's chunk, disc or body bounds, one range per rank.
+std::vector<std::int32_t> rank_of_ranges(const std::vector<std::ptrdiff_t>& bounds, std::size_t items);
+
 // The plan of a step cut by `cut` (one share per rank). The acting bonds [0, acting_bonds) are
 // stepped by the ranks that integrate either disc, after the whole sums arrive (so a bond's
 // discs are read by both: ghosts). std::logic_error if some disc lies in two chunks of one parity

@@ -83,10 +83,7 @@ PreviousKeepers record_keepers(RankAccess& a, const ExchangePlan& plan) {
   PreviousKeepers k;
   k.disc_step = by_id(a.discs.id, [&](std::size_t i) { return plan.step_rank[i]; });
   k.disc_wall = by_id(a.discs.id, [&](std::size_t i) { return plan.wall_rank[i]; });
-  std::vector<std::int32_t> body_rank(a.clusters.size(), kNoRank);
-  for_each_range(plan.cut.body, [&](std::int32_t r, std::size_t k0, std::size_t k1) {
-    std::fill(body_rank.begin() + static_cast<std::ptrdiff_t>(k0), body_rank.begin() + static_cast<std::ptrdiff_t>(k1), r);
-  });
+  const std::vector<std::int32_t> body_rank = rank_of_ranges(plan.cut.body, a.clusters.size());
   k.body = by_id(a.clusters.id, [&](std::size_t b) { return body_rank[b]; });
   // The pairs' keepers travel by the key their histories travel by, as a history that is never 0.
   const PairContacts& pairs = a.contacts.pairs;
@@ -105,10 +102,10 @@ Migration find_migration(RankAccess& a, const PreviousKeepers& before, const Exc
   m.disc.resize(d.size());
   for (std::size_t i = 0; i < d.size(); ++i)
     m.disc[i] = moved_from(before.disc_step[static_cast<std::size_t>(d.id[i])], plan.step_rank[i]);
-  m.body.assign(a.clusters.size(), kNoRank);
-  for_each_range(plan.cut.body, [&](std::int32_t r, std::size_t k0, std::size_t k1) {
-    for (std::size_t k = k0; k < k1; ++k) m.body[k] = moved_from(before.body[static_cast<std::size_t>(a.clusters.id[k])], r);
-  });
+  const std::vector<std::int32_t> body_rank = rank_of_ranges(plan.cut.body, a.clusters.size());
+  m.body.resize(a.clusters.size());
+  for (std::size_t k = 0; k < a.clusters.size(); ++k)
+    m.body[k] = moved_from(before.body[static_cast<std::size_t>(a.clusters.id[k])], body_rank[k]);
   const PairContacts& pairs = a.contacts.pairs;
   m.pair.assign(pairs.size(), kNoRank);
   for_each_pair_range(a.neighbors, plan, [&](std::int32_t r, std::size_t p0, std::size_t p1) {

@@ -172,6 +172,7 @@ void RankStep::post_build() {
 }
 
 void RankStep::take_build() {
+  PreviousKeepers keepers;
   if (migrate_) {
     Stopwatch watch(serial_.gather_seconds);
     for (int q = 0; q < ranks_; ++q) {
@@ -180,7 +181,7 @@ void RankStep::take_build() {
       transport_->receive(q, buffer_);
       unpack_build_state(access_, plan_, q, buffer_);
     }
-    keepers_ = record_keepers(access_, plan_);  // before the build re-orders what they name
+    keepers = record_keepers(access_, plan_);  // before the build re-orders what they name
   }
   if (build_) {
     // Every copy builds the list of one process, sort included: what the build reads (the
@@ -192,7 +193,7 @@ void RankStep::take_build() {
   // The bonds re-ordered (after a build, or new bonds): their routes too.
   const bool bonds_moved = access_.prepare_bonds();
   if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds || bonds_moved) make_plan();
-  if (migrate_) migration_ = find_migration(access_, keepers_, plan_);
+  if (migrate_) migration_ = find_migration(access_, keepers, plan_);
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
 }
 

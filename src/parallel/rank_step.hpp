@@ -126,7 +126,6 @@ class RankStep {
   bool whole_ = true;  // this copy holds every rank's current state (a fresh copy, gathered by a stage, or built from it)
   bool build_ = false;  // this step rebuilds the list
   bool migrate_ = false;  // ... from the positions alone: the state then migrates (migration.hpp)
-  PreviousKeepers keepers_;
   Migration migration_;
   double max2_ = 0;
   double not_finite_ = 0;
