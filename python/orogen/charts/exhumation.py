@@ -71,6 +71,12 @@ def save(fig, out, name):
 def spacetime(ds, da, title, label, cmap, out, name):
     fig, ax = plt.subplots(figsize=(8, 5))
     m = ax.pcolormesh(ds.column.values, ds.S.values, np.ma.masked_invalid(da.values), shading="nearest", cmap=cmap)
+    # Only the columns that ever held the surface: a long foreland window would squeeze the wedge.
+    held = np.flatnonzero(np.isfinite(da.values).any(axis=0))
+    if held.size:
+        x = ds.column.values
+        pad = 0.5 * float(np.median(np.diff(x))) if x.size > 1 else 0.5
+        ax.set_xlim(x[held[0]] - pad, x[held[-1]] + pad)
     fig.colorbar(m, ax=ax, label=label)
     ax.set_xlabel("x from the S-point [h0]")
     ax.set_ylabel("S = v t / h0")
