@@ -8,34 +8,34 @@
 
 namespace orogen {
 
-PairSearchResult search_pairs(NeighborList& L, const CellBins& bins, const Discs& d) {
+PairChunks pair_chunks(const CellGrid& g) {
+  // Chunks of whole stripes, at most kMaxPairChunks of them: a number fixed by the geometry
+  // alone, so that the order of the force sums never depends on the thread count.
+  PairChunks chunks;
+  chunks.stripes_per_chunk = (g.nu() + kMaxPairChunks - 1) / kMaxPairChunks;
+  chunks.count = (g.nu() + chunks.stripes_per_chunk - 1) / chunks.stripes_per_chunk;
+  return chunks;
+}
+
+std::vector<ChunkPairs> search_pair_chunks(const CellBins& bins, const Discs& d, double skin, std::int64_t begin,
+                                           std::int64_t end) {
   const CellGrid& g = bins.grid;
   const auto& order = bins.order;
   const auto& cell_start = bins.cell_start;
+  const std::int64_t stripes_per_chunk = pair_chunks(g).stripes_per_chunk;
   // Each cell against itself and its four forward neighbours in traversal order: (u, v+1) in
-  // its own stripe and (u+1, v-1), (u+1, v), (u+1, v+1) in the next. Chunks of whole stripes,
-  // at most kMaxPairChunks of them: a number fixed by the geometry alone, so that the order of the
-  // force sums never depends on the thread count. Chunks are searched in parallel into lists
-  // of their own, joined in chunk order.
-  PairSearchResult result;
-  const std::int64_t stripes_per_chunk = (g.nu() + kMaxPairChunks - 1) / kMaxPairChunks;
-  const std::int64_t chunks = (g.nu() + stripes_per_chunk - 1) / stripes_per_chunk;
-  result.stripes_per_chunk = stripes_per_chunk;
+  // its own stripe and (u+1, v-1), (u+1, v), (u+1, v+1) in the next. Chunks are searched in
+  // parallel into lists of their own.
+  //
   // A chunk's pairs that touch now, then the rest, each part in search order: the force loop
   // runs the first part through the kernel untested and tests the second, and either test
   // then mostly goes one way (a test that goes either way at random costs a mispredicted
   // branch for one pair in four; docs/performance.md).
-  struct ChunkPairs {
-    std::vector<std::uint32_t> first, second;
-    std::vector<std::uint32_t> apart_first, apart_second;
-    BuildStats stats;
-  };
-  std::vector<ChunkPairs> found(static_cast<std::size_t>(chunks));
+  std::vector<ChunkPairs> found(static_cast<std::size_t>(std::max<std::int64_t>(end - begin, 0)));
   const std::int64_t neighbours[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};  // (du, dv)
-  const double skin = L.skin;
 #pragma omp parallel for schedule(dynamic, 1) if (static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items())
-  for (std::int64_t k = 0; k < chunks; ++k) {
-    ChunkPairs& out = found[static_cast<std::size_t>(k)];
+  for (std::int64_t k = begin; k < end; ++k) {
+    ChunkPairs& out = found[static_cast<std::size_t>(k - begin)];
     auto consider = [&](std::uint32_t a, std::uint32_t b) {
       if (d.cluster_id[a] >= 0 && d.cluster_id[a] == d.cluster_id[b]) return;
       if (!d.is_dynamic(a) && !d.is_dynamic(b)) return;
@@ -72,6 +72,13 @@ PairSearchResult search_pairs(NeighborList& L, const CellBins& bins, const Discs
       }
     }
   }
+  return found;
+}
+
+PairSearchResult join_pair_chunks(NeighborList& L, const std::vector<ChunkPairs>& found,
+                                  std::int64_t stripes_per_chunk) {
+  PairSearchResult result;
+  result.stripes_per_chunk = stripes_per_chunk;
   L.first.clear(); L.second.clear();
   L.chunk_start.clear();
   for (const auto& f : found) {
@@ -89,6 +96,11 @@ PairSearchResult search_pairs(NeighborList& L, const CellBins& bins, const Discs
   }
   L.chunk_start.push_back(static_cast<std::uint32_t>(L.first.size()));
   return result;
+}
+
+PairSearchResult search_pairs(NeighborList& L, const CellBins& bins, const Discs& d) {
+  const PairChunks chunks = pair_chunks(bins.grid);
+  return join_pair_chunks(L, search_pair_chunks(bins, d, L.skin, 0, chunks.count), chunks.stripes_per_chunk);
 }
 
 }  // namespace orogen

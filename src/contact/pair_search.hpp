@@ -32,8 +32,36 @@ struct PairSearchResult {
 // chunks, so it also bounds the ranks of one run).
 inline constexpr std::int64_t kMaxPairChunks = 64;
 
+// How a grid's stripes make chunks: stripes_per_chunk whole stripes each (the last may be
+// shorter), at most kMaxPairChunks chunks.
+struct PairChunks {
+  std::int64_t stripes_per_chunk = 1;
+  std::int64_t count = 0;
+};
+PairChunks pair_chunks(const CellGrid& grid);
+
+// One chunk's pairs as its search lists them: those that touch, then those apart, each in
+// search order (the lower stable id first), and the chunk's worst overlap.
+struct ChunkPairs {
+  std::vector<std::uint32_t> first, second;
+  std::vector<std::uint32_t> apart_first, apart_second;
+  BuildStats stats;
+};
+
+// Searches chunks [begin, end) of the bins: the pairs whose lower stripe lies in them, which
+// read the discs of those stripes and of the one stripe after. A chunk's pairs do not depend
+// on which other chunks are searched with it (a rank's share of the list over ranks).
+std::vector<ChunkPairs> search_pair_chunks(const CellBins& bins, const Discs& discs, double skin, std::int64_t begin,
+                                           std::int64_t end);
+
+// Joins every chunk's pairs, in chunk order, into list.first, second and chunk_start, and
+// tells what the search saw (the worst overlap: the first chunk's on a tie).
+PairSearchResult join_pair_chunks(NeighborList& list, const std::vector<ChunkPairs>& found,
+                                  std::int64_t stripes_per_chunk);
+
 // Sets list.first, second (the lower stable id first; in each chunk the pairs that touch
-// first, then those apart, each part in search order) and chunk_start from the bins.
+// first, then those apart, each part in search order) and chunk_start from the bins: every
+// chunk searched, then joined.
 PairSearchResult search_pairs(NeighborList& list, const CellBins& bins, const Discs& discs);
 
 }  // namespace orogen

@@ -1,0 +1,71 @@
+// The pair search chunk by chunk: chunks searched apart and joined make the list of one whole
+// search, and a chunk's pairs lie in its own stripes and the one after. A list built over
+// ranks (each rank searching its own chunks, docs/domain-decomposition.md) rests on both.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "contact/cell_grid.hpp"
+#include "contact/disc_scan.hpp"
+#include "contact/pair_search.hpp"
+#include "ranks_world.hpp"
+
+namespace orogen {
+namespace {
+
+TEST(PairSearch, ChunksSearchedApartJoinToTheWholeSearch) {
+  World w = testing::mixed_heap();
+  const Discs& d = w.discs();
+  const double skin = w.neighbors().skin;
+  const CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan_discs(d).r_max + skin));
+  const PairChunks chunks = pair_chunks(bins.grid);
+  ASSERT_GE(chunks.count, 6);
+
+  NeighborList whole;
+  whole.skin = skin;
+  const PairSearchResult one = search_pairs(whole, bins, d);
+  ASSERT_GT(whole.size(), d.size() / 2);  // a heap, not a gas
+
+  // Three uneven shares, as three ranks would search them.
+  const std::int64_t cuts[] = {0, 1, chunks.count / 2 + 1, chunks.count};
+  std::vector<ChunkPairs> found;
+  for (int r = 0; r < 3; ++r) {
+    auto share = search_pair_chunks(bins, d, skin, cuts[r], cuts[r + 1]);
+    EXPECT_EQ(share.size(), static_cast<std::size_t>(cuts[r + 1] - cuts[r]));
+    for (auto& c : share) found.push_back(std::move(c));
+  }
+  NeighborList joined;
+  const PairSearchResult apart = join_pair_chunks(joined, found, chunks.stripes_per_chunk);
+  EXPECT_EQ(joined.first, whole.first);
+  EXPECT_EQ(joined.second, whole.second);
+  EXPECT_EQ(joined.chunk_start, whole.chunk_start);
+  EXPECT_EQ(apart.touching, one.touching);
+  EXPECT_EQ(apart.stripes_per_chunk, one.stripes_per_chunk);
+  EXPECT_EQ(apart.stats.max_overlap_ratio, one.stats.max_overlap_ratio);
+  EXPECT_EQ(apart.stats.worst_a, one.stats.worst_a);
+  EXPECT_EQ(apart.stats.worst_b, one.stats.worst_b);
+
+  // Chunk k's pairs have their lower stripe in chunk k and reach at most one stripe past it.
+  const CellGrid& g = bins.grid;
+  auto stripe = [&](std::uint32_t i) { return g.cell_of(d.x[i], d.y[i]) / g.nv(); };
+  for (std::int64_t k = 0; k < chunks.count; ++k) {
+    const std::int64_t lo = k * chunks.stripes_per_chunk;
+    const std::int64_t hi = std::min(g.nu(), lo + chunks.stripes_per_chunk);  // one past the chunk
+    for (auto p = whole.chunk_start[static_cast<std::size_t>(k)]; p < whole.chunk_start[static_cast<std::size_t>(k) + 1]; ++p) {
+      const std::int64_t sa = stripe(whole.first[p]), sb = stripe(whole.second[p]);
+      EXPECT_GE(std::min(sa, sb), lo);
+      EXPECT_LT(std::min(sa, sb), hi);
+      EXPECT_LE(std::max(sa, sb), hi);
+    }
+  }
+}
+
+TEST(PairSearch, AnEmptyRangeFindsNothing) {
+  World w = testing::mixed_heap(2, 10, 10);
+  const Discs& d = w.discs();
+  const CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan_discs(d).r_max + w.neighbors().skin));
+  EXPECT_TRUE(search_pair_chunks(bins, d, w.neighbors().skin, 3, 3).empty());
+}
+
+}  // namespace
+}  // namespace orogen
