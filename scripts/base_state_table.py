@@ -30,7 +30,7 @@ from orogen.charts.granular import markdown_table  # noqa: E402
 
 
 def row(run, phi_residual):
-    config, late, series, table, _ = traction.measure(run)
+    config, late, series, table, _, _ = traction.measure(run)
     _, packed, cells = stress.measure(run)
     mu_b = traction.base_friction(config)
     singly = traction.is_singly(config)

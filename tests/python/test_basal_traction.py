@@ -47,7 +47,7 @@ class BasalTraction(RunOnce):
     ARGS = ["--set", "wedge.s_end=1.5", "--set", "wedge.outputs=6"]
 
     def test_the_bases_transmit_at_most_their_coulomb_limit(self):
-        config, late, _, table, slip = basal_traction.measure(self.folder)
+        config, late, _, table, slip, retro = basal_traction.measure(self.folder)
         self.assertGreaterEqual(len(late), 2)  # outputs of the last third with a pro front
         mu_bp, mu_br = config["wedge"]["mu_bp"], config["wedge"]["mu_br"]
         # fx, fy hold mu to about 1e-8: the pro base starts at x = -1e7, so its contact normals tilt by rounding
@@ -58,6 +58,14 @@ class BasalTraction(RunOnce):
         below, at = slip[slip.at_limit == 0].slip, slip[slip.at_limit == 1].slip
         self.assertLess(abs(below.median()), 0.02)  # stuck to the plate (an elastic stick)
         self.assertLess(at.median(), -0.1)  # the wedge holds them back: slower than the plate
+        # The retro base stands still: what it holds sits on it, what slides is pushed retro-ward.
+        self.assertGreater(len(retro), 0)
+        self.assertTrue(((retro.u > 0) & (retro.u < 1)).all())  # from the S-point (0) to the retro front (1)
+        held, sliding = retro[retro.at_limit == 0], retro[retro.at_limit == 1]
+        self.assertLess(abs(held.slip.median()), 0.02)
+        if len(sliding):
+            np.testing.assert_allclose(sliding.fx / sliding.fy, mu_br, rtol=1e-6)  # -fx: it holds the wedge back
+            self.assertGreater(sliding.slip.median(), 0)  # moving retro-ward (+x) over the base
 
     def test_a_contact_at_the_limit_carries_mu_fn(self):
         with h5py.File(os.path.join(self.folder, "snapshots.h5"), "r") as f:
@@ -78,13 +86,14 @@ class SinglyVergentFloor(RunOnce):
             "layer.length=60", "--set", "singly.shortening=1.5", "--set", "singly.outputs=6"]
 
     def test_the_floor_under_the_wedge_transmits_at_most_mu_b(self):
-        config, late, series, table, slip = basal_traction.measure(self.folder)
+        config, late, series, table, slip, retro = basal_traction.measure(self.folder)
         self.assertEqual(basal_traction.base_friction(config), 0.2)
         # the outputs after singly.steady_from (0.5) of the shortening that have a wedge
         self.assertTrue((series["shortening"].iloc[late] >= 0.75 - 1e-9).all())
         self.assertGreaterEqual(len(late), 2)
         self.assertTrue(((table["mu_pro"] > 0) & (table["mu_pro"] <= 0.2 * (1 + 1e-6))).all(), table["mu_pro"])
         self.assertTrue(table["mu_retro"].isna().all())  # no retro base
+        self.assertEqual(len(retro), 0)
         below, at = slip[slip.at_limit == 0].slip, slip[slip.at_limit == 1].slip
         self.assertLess(abs(below.median()), 0.05)  # stuck to the floor
         self.assertLess(at.median(), -0.3)  # sliding towards the foreland with the wedge

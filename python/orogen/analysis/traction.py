@@ -14,11 +14,14 @@ floor between the front and the backstop as the pro base (`singly.mu_b`), no ret
 - at_limit_pro, at_limit_retro: the share of those contacts whose tangential force sits on the
   Coulomb limit mu fn;
 - with --bins N, the same along the pro base in N equal parts from the front to the S-point (or
-  the backstop), all late outputs together: where under the wedge the base is at its limit;
+  the backstop), and along the retro base from the S-point to the retro front, all late outputs
+  together: where under the wedge the base is at its limit;
 - slip_pro: the median slip of the pro contacts against the plate, (v_contact - v) / v, with
   v_contact = vx + omega r at the disc's lowest point, for the contacts below and at the limit
   (the singly-vergent floor stands still: v_contact / v with v the backstop's speed, -1 for a
-  disc that moves with the backstop, 0 for one stuck to the floor).
+  disc that moves with the backstop, 0 for one stuck to the floor);
+- slip_retro: the same for the retro base, which stands still (v_contact / v: 0 for a disc held
+  by it, above 0 for one pushed over it towards the retro front).
 
 Prints the mean, standard deviation and range over the outputs.
 
@@ -87,7 +90,7 @@ def measure(run):
     singly = is_singly(config)
     v = config["singly" if singly else "wedge"]["speed"]
     v_base = 0.0 if singly else v  # the floor under a singly-vergent wedge stands still
-    rows, slips = [], []
+    rows, slips, retro_slips = [], [], []
     with h5py.File(f"{run}/snapshots.h5", "r") as f:
         for k in late:
             g = f["output_%06d" % k]
@@ -109,9 +112,24 @@ def measure(run):
             slip = (g["vx"][()][disc] + g["omega"][()][disc] * g["radius"][()][disc] - v_base) / v
             u = (x[on_pro] - x_from) / (x_to - x_from)  # 0 at the front, 1 at the S-point or backstop
             slips += list(zip(limit[on_pro], slip, u, fx[on_pro], fy[on_pro]))
+            if not singly and on_retro.any():
+                disc = c["index_b"][()][on_retro]
+                slip = (g["vx"][()][disc] + g["omega"][()][disc] * g["radius"][()][disc]) / v
+                u = x[on_retro] / series["Dr"].iloc[k]  # 0 at the S-point, 1 at the retro front
+                retro_slips += list(zip(limit[on_retro], slip, u, -fx[on_retro], fy[on_retro]))
     table = pd.DataFrame(rows)
-    slip = pd.DataFrame(slips, columns=["at_limit", "slip", "u", "fx", "fy"])
-    return config, late, series, table, slip
+    columns = ["at_limit", "slip", "u", "fx", "fy"]
+    slip, retro_slip = pd.DataFrame(slips, columns=columns), pd.DataFrame(retro_slips, columns=columns)
+    return config, late, series, table, slip, retro_slip
+
+
+def print_bins(name, contacts, bins, ends):
+    """The base's transmitted friction and share at the limit in `bins` equal parts of u."""
+    part = np.minimum((contacts.u * bins).astype(int), bins - 1)
+    for b, group in contacts.groupby(part):
+        print(f"  {name} {b / bins:.2f}-{(b + 1) / bins:.2f} of the way {ends}: transmits "
+              f"{group.fx.sum() / group.fy.sum():.3f}, {group.at_limit.mean():.0%} of {len(group)} contacts at the limit, "
+              f"median slip {group.slip.median():.2f} v")
 
 
 def main():
@@ -119,7 +137,7 @@ def main():
     p.add_argument("run", help="a wedge run folder made with output.contacts = true")
     p.add_argument("--bins", type=int, default=0, help="also along the pro base, in this many parts")
     args = p.parse_args()
-    config, late, series, table, slip = measure(args.run)
+    config, late, series, table, slip, retro_slip = measure(args.run)
     if is_singly(config):
         print(f"{args.run}: singly-vergent, mu_b {config['singly']['mu_b']}, {len(late)} outputs, shortening "
               f"{series['shortening'].iloc[late[0]]:.2f}-{series['shortening'].iloc[late[-1]]:.2f} h0")
@@ -136,11 +154,13 @@ def main():
     for at_limit, group in slip.groupby("at_limit"):
         print(f"  slip_pro of the contacts {'at' if at_limit else 'below'} the limit: median {group.slip.median():.2f} v "
               f"({len(group)} contacts)")
+    for at_limit, group in retro_slip.groupby("at_limit"):
+        print(f"  slip_retro of the contacts {'at' if at_limit else 'below'} the limit: median {group.slip.median():.2f} v "
+              f"({len(group)} contacts)")
     if args.bins > 0:
-        part = np.minimum((slip.u * args.bins).astype(int), args.bins - 1)
-        for b, group in slip.groupby(part):
-            print(f"  pro base {b / args.bins:.2f}-{(b + 1) / args.bins:.2f} of the way from the front: transmits "
-                  f"{group.fx.sum() / group.fy.sum():.3f}, {group.at_limit.mean():.0%} of {len(group)} contacts at the limit")
+        print_bins("pro base", slip, args.bins, "from the front")
+        if len(retro_slip):
+            print_bins("retro base", retro_slip, args.bins, "from the S-point")
     tapers = series.iloc[late]
     if is_singly(config):
         print(f"  late taper {tapers['taper'].mean():.2f} deg (front half {tapers['taper_front'].mean():.2f}, back half "
