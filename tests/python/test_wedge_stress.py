@@ -22,10 +22,11 @@ from orogen.analysis import stress as wedge_stress  # noqa: E402
 H0, CELL, PSI = 10.0, 1.0, 6.0
 
 
-def write_run(folder, singly=False):
+def write_run(folder, singly=False, mirror=False):
     """A wedge whose surface rises from y = 4 at x = -60 to 20 at the S-point (x = 0), with
     the late pro front at -5 h0, and a stress grid of one state. As a singly-vergent run: the
-    same front, the backstop at x = 5 (0.5 h0), five outputs of which the last three are late."""
+    same front, the backstop at x = 5 (0.5 h0), five outputs of which the last three are late.
+    Mirrored (x to -x, the stress state with it): a retro-wedge falling to its front at 5 h0."""
     os.makedirs(folder)
     with open(os.path.join(folder, "series.csv"), "w") as f:
         if singly:
@@ -33,9 +34,9 @@ def write_run(folder, singly=False):
             for k in range(5):
                 f.write("%g,0.5,-5,5.5,9.5,1\n" % (k * 1.0))
         else:
-            f.write("# synthetic\nS,Dp,alpha,H\n")
+            f.write("# synthetic\nS,Dp,Dr,alpha,beta,H\n")
             for k in range(3):
-                f.write("%g,-5,9.5,2\n" % (6 + k))
+                f.write("%g,-5,5,9.5,9.5,2\n" % (6 + k))
     xs = np.arange(-60.0, 10.0, 1.0) + 0.5
     x, y = [], []
     for xi in xs:
@@ -43,11 +44,11 @@ def write_run(folder, singly=False):
         for yj in np.arange(0.5, top, 1.0):
             x.append(xi)
             y.append(yj)
-    x, y = np.array(x), np.array(y)
+    x, y = np.array(x) * (-1 if mirror else 1), np.array(y)
     rows, columns = 24, 70
     c, r, t = 2.0, 1.0, math.radians(2 * PSI)
     config = ("[run]\nexperiment = \"singly_vergent\"\n[singly]\nmu_b = 0.2\nshortening = 4.0\nsteady_from = 0.5\n"
-              if singly else "[wedge]\ns_end = 8.0\nmu_bp = 0.2\n")
+              if singly else "[wedge]\ns_end = 8.0\nmu_bp = 0.2\nmu_br = 0.4\n")
     with h5py.File(os.path.join(folder, "snapshots.h5"), "w") as f:
         f.attrs["h0"] = H0
         f.attrs["config_toml"] = config
@@ -55,10 +56,10 @@ def write_run(folder, singly=False):
             g = f.create_group("output_%06d" % k)
             g["x"], g["y"], g["radius"] = x, y, np.full(x.size, 0.5)
             grid = g.create_group("stress_grid")
-            grid.attrs["cell"], grid.attrs["x0"], grid.attrs["y0"] = CELL, -60.0, 0.0
+            grid.attrs["cell"], grid.attrs["x0"], grid.attrs["y0"] = CELL, -10.0 if mirror else -60.0, 0.0
             grid["xx"] = np.full((rows, columns), -(c + r * math.cos(t)))  # tension positive
             grid["yy"] = np.full((rows, columns), -(c - r * math.cos(t)))
-            grid["xy"] = grid["yx"] = np.full((rows, columns), -r * math.sin(t))
+            grid["xy"] = grid["yx"] = np.full((rows, columns), (1 if mirror else -1) * r * math.sin(t))
 
 
 class WedgeStress(unittest.TestCase):
@@ -123,6 +124,19 @@ class WedgeStress(unittest.TestCase):
                        for I in range(35) for J in range(12))
         self.assertGreater(expected, 20)
         self.assertEqual(len(cells), 3 * expected)
+
+    def test_a_retro_wedge_is_read_as_the_pro_wedge_turned_over(self):
+        folder = os.path.join(self.tmp, "retro")
+        write_run(folder, mirror=True)
+        config, late, cells = wedge_stress.measure(folder, block=2.0, side="retro")
+        np.testing.assert_allclose(cells["phi_mob"], 30.0, atol=1e-9)
+        np.testing.assert_allclose(cells["psi"], PSI, atol=1e-9)  # s1 dipping toward the retro foreland
+        _, _, pro = wedge_stress.measure(self.folder, block=2.0)
+        self.assertEqual(len(cells), len(pro))  # the mirror image of the pro-wedge's squares
+        with self.assertRaises(SystemExit):  # a singly-vergent wedge has no retro side
+            singly = os.path.join(self.tmp, "singly")
+            write_run(singly, singly=True)
+            wedge_stress.measure(singly, block=2.0, side="retro")
 
     def test_the_theory_beside_it(self):
         self.assertAlmostEqual(wedge_stress.psi_base(30.0, 0.0), 0.0)
