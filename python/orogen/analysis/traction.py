@@ -135,7 +135,7 @@ def print_bins(name, contacts, bins, ends):
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("run", help="a wedge run folder made with output.contacts = true")
-    p.add_argument("--bins", type=int, default=0, help="also along the pro base, in this many parts")
+    p.add_argument("--bins", type=int, default=0, help="also along each base, in this many parts")
     args = p.parse_args()
     config, late, series, table, slip, retro_slip = measure(args.run)
     if is_singly(config):
@@ -151,12 +151,10 @@ def main():
     for name in table.columns:
         col = table[name]
         print(f"  {name}: mean {col.mean():.3f}, sd {col.std():.3f}, range {col.min():.3f}-{col.max():.3f}")
-    for at_limit, group in slip.groupby("at_limit"):
-        print(f"  slip_pro of the contacts {'at' if at_limit else 'below'} the limit: median {group.slip.median():.2f} v "
-              f"({len(group)} contacts)")
-    for at_limit, group in retro_slip.groupby("at_limit"):
-        print(f"  slip_retro of the contacts {'at' if at_limit else 'below'} the limit: median {group.slip.median():.2f} v "
-              f"({len(group)} contacts)")
+    for name, contacts in (("slip_pro", slip), ("slip_retro", retro_slip)):
+        for at_limit, group in contacts.groupby("at_limit"):
+            print(f"  {name} of the contacts {'at' if at_limit else 'below'} the limit: median {group.slip.median():.2f} v "
+                  f"({len(group)} contacts)")
     if args.bins > 0:
         print_bins("pro base", slip, args.bins, "from the front")
         if len(retro_slip):
