@@ -170,19 +170,19 @@ def main():
     args = p.parse_args()
     config, late, cells = measure(args.run, args.block, args.side)
     retro = args.side == "retro"
-    mu_bp = config["wedge"]["mu_br"] if retro else base_friction(config)
+    mu_b = config["wedge"]["mu_br"] if retro else base_friction(config)
     if cells.empty:
         raise SystemExit(f"{args.run}: no interior cells in the {args.side}-wedge (is the wedge thicker than a few cells?)")
     print(f"{args.run}: {len(late)} outputs, {len(cells)} interior {args.side}-wedge squares, "
-          f"{'mu_br' if retro else 'mu_bp'} {mu_bp}")
+          f"{'mu_br' if retro else 'mu_bp'} {mu_b}")
     for name in ("phi_mob", "psi"):
         q = cells[name].quantile([0.25, 0.5, 0.75])
         print(f"  {name}: median {q[0.5]:.1f} deg, quartiles {q[0.25]:.1f}-{q[0.75]:.1f}")
     print(f"  solid fraction: inside the {args.side}-wedge {late['solid_wedge'].mean():.3f}, in the layer 1-3 h0 "
           f"ahead of its front {late['solid_ahead'].mean():.3f}")
     for phi in (float(v) for v in args.phi.split(",")):
-        print(f"  critical wedge of phi {phi:.1f} deg on mu_b {mu_bp}: phi_mob {phi:.1f}, psi_b {psi_base(phi, mu_bp):.1f} deg, "
-              f"taper {critical_taper_deg(phi, mu_bp):.1f} deg")
+        print(f"  critical wedge of phi {phi:.1f} deg on mu_b {mu_b}: phi_mob {phi:.1f}, psi_b {psi_base(phi, mu_b):.1f} deg, "
+              f"taper {critical_taper_deg(phi, mu_b):.1f} deg")
     if is_singly(config):
         print(f"  late taper {late['taper'].mean():.2f} deg, height {late['height'].mean():.2f} h0")
     elif retro:
