@@ -1,6 +1,7 @@
 // The pair search chunk by chunk: chunks searched apart and joined make the list of one whole
-// search, and a chunk's pairs lie in its own stripes and the one after. A list built over
-// ranks (each rank searching its own chunks, docs/domain-decomposition.md) rests on both.
+// search, a chunk's pairs lie in its own stripes and the one after, and the ranks the stripes
+// give each disc cover those the list gives. A list built over ranks (each rank searching its
+// own chunks, docs/domain-decomposition.md) rests on all three.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +9,8 @@
 #include "contact/cell_grid.hpp"
 #include "contact/disc_scan.hpp"
 #include "contact/pair_search.hpp"
+#include "parallel/exchange_plan.hpp"
+#include "parallel/stripe_ranks.hpp"
 #include "ranks_world.hpp"
 
 namespace orogen {
@@ -57,6 +60,36 @@ TEST(PairSearch, ChunksSearchedApartJoinToTheWholeSearch) {
       EXPECT_LT(std::min(sa, sb), hi);
       EXPECT_LE(std::max(sa, sb), hi);
     }
+  }
+}
+
+// The ranks that the stripes say can name a disc include every rank the list's pairs name it in,
+// cut evenly by pair counts and lopsidedly: a plan from the stripes covers the plan from the list.
+TEST(StripeRanks, CoverTheRanksThatTheListGives) {
+  World w = testing::mixed_heap();
+  const Discs& d = w.discs();
+  const double skin = w.neighbors().skin;
+  const CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan_discs(d).r_max + skin));
+  NeighborList list;
+  list.skin = skin;
+  const PairSearchResult search = search_pairs(list, bins, d);
+  for (const ThreadSplit& cut : {split_threads(list, d, w.clusters(), 3), testing::lopsided_cut(list, d, w.clusters(), 3)}) {
+    const ExchangePlan plan = make_exchange_plan(list, w.contacts().walls, d, w.clusters(), cut, Bonds{}, 0);
+    const StripeRanks stripes = stripe_chunk_ranks(bins.grid, d, search.stripes_per_chunk, cut);
+    std::size_t named = 0, more = 0;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      for (const auto& [from_list, from_stripes] : {std::pair{plan.even_rank[i], stripes.even[i]},
+                                                    std::pair{plan.odd_rank[i], stripes.odd[i]}}) {
+        if (from_list != kNoRank) {
+          EXPECT_EQ(from_stripes, from_list) << "disc " << i;
+          ++named;
+        } else {
+          more += from_stripes != kNoRank;
+        }
+      }
+    }
+    EXPECT_GT(named, d.size() / 2);
+    EXPECT_LT(more, named);  // a superset, not every rank for every disc
   }
 }
 

@@ -1,0 +1,25 @@
+#pragma once
+// The ranks whose chunks can name each disc, from the stripes alone (docs/domain-decomposition.md,
+// "The second half, as it would be built"): a pair lies in the chunk of its lower stripe and
+// reaches one stripe past it, so a disc of stripe u can only be named by chunk(u)'s pairs and,
+// where u is its chunk's first stripe, by chunk(u) - 1's. A plan made from these is a superset of
+// the plan made from the whole list, and needs no rank's pairs: what a rank that builds only its
+// own chunks of the list needs. Not yet used by the step over ranks.
+#include <cstdint>
+#include <vector>
+
+#include "contact/cell_grid.hpp"
+#include "contact/thread_split.hpp"
+#include "particles/discs.hpp"
+
+namespace orogen {
+
+// By disc index: the rank of the even and of the odd chunk that can name the disc (kNoRank where
+// none), for the grid and chunk size of a build and a cut of its chunks between ranks.
+struct StripeRanks {
+  std::vector<std::int32_t> even, odd;
+};
+StripeRanks stripe_chunk_ranks(const CellGrid& grid, const Discs& discs, std::int64_t stripes_per_chunk,
+                               const ThreadSplit& cut);
+
+}  // namespace orogen
