@@ -72,10 +72,10 @@ TEST(StripeRanks, CoverTheRanksThatTheListGives) {
   const CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan_discs(d).r_max + skin));
   NeighborList list;
   list.skin = skin;
-  const PairSearchResult search = search_pairs(list, bins, d);
+  search_pairs(list, bins, d);
   for (const ThreadSplit& cut : {split_threads(list, d, w.clusters(), 3), testing::lopsided_cut(list, d, w.clusters(), 3)}) {
     const ExchangePlan plan = make_exchange_plan(list, w.contacts().walls, d, w.clusters(), cut, Bonds{}, 0);
-    const StripeRanks stripes = stripe_chunk_ranks(bins.grid, d, search.stripes_per_chunk, cut);
+    const StripeRanks stripes = stripe_chunk_ranks(bins.grid, d, cut);
     std::size_t named = 0, more = 0;
     for (std::size_t i = 0; i < d.size(); ++i) {
       for (const auto& [from_list, from_stripes] : {std::pair{plan.even_rank[i], stripes.even[i]},

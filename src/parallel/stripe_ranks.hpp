@@ -15,11 +15,11 @@
 namespace orogen {
 
 // By disc index: the rank of the even and of the odd chunk that can name the disc (kNoRank where
-// none), for the grid and chunk size of a build and a cut of its chunks between ranks.
+// none), for the grid of a build (its chunks as pair_chunks makes them) and a cut of its chunks
+// between ranks.
 struct StripeRanks {
   std::vector<std::int32_t> even, odd;
 };
-StripeRanks stripe_chunk_ranks(const CellGrid& grid, const Discs& discs, std::int64_t stripes_per_chunk,
-                               const ThreadSplit& cut);
+StripeRanks stripe_chunk_ranks(const CellGrid& grid, const Discs& discs, const ThreadSplit& cut);
 
 }  // namespace orogen

@@ -85,6 +85,11 @@ def base_rows(walls, singly=False):
     return pro, [i for i in base if i not in pro]
 
 
+def contact_speed(g, disc):
+    """x velocity of each disc's lowest point in output group g: vx + omega r."""
+    return g["vx"][()][disc] + g["omega"][()][disc] * g["radius"][()][disc]
+
+
 def measure(run):
     series, h0, config, late = late_outputs(run)
     singly = is_singly(config)
@@ -109,12 +114,12 @@ def measure(run):
                          "mu_retro": -fx[on_retro].sum() / fy[on_retro].sum() if on_retro.any() else np.nan,
                          "at_limit_retro": limit[on_retro].mean() if on_retro.any() else np.nan})
             disc = c["index_b"][()][on_pro]
-            slip = (g["vx"][()][disc] + g["omega"][()][disc] * g["radius"][()][disc] - v_base) / v
+            slip = (contact_speed(g, disc) - v_base) / v
             u = (x[on_pro] - x_from) / (x_to - x_from)  # 0 at the front, 1 at the S-point or backstop
             slips += list(zip(limit[on_pro], slip, u, fx[on_pro], fy[on_pro]))
             if not singly and on_retro.any():
                 disc = c["index_b"][()][on_retro]
-                slip = (g["vx"][()][disc] + g["omega"][()][disc] * g["radius"][()][disc]) / v
+                slip = contact_speed(g, disc) / v
                 u = x[on_retro] / series["Dr"].iloc[k]  # 0 at the S-point, 1 at the retro front
                 retro_slips += list(zip(limit[on_retro], slip, u, -fx[on_retro], fy[on_retro]))
     table = pd.DataFrame(rows)
