@@ -125,8 +125,11 @@ TEST(EmulatedRanks, MigrationAfterABuildMatters) {
   const std::uint64_t builds = one.neighbors().builds;
   int steps = 0;
   constexpr std::uint64_t kBuilds = 6;
+  std::size_t listed = 0;  // pairs listed over the builds
   while (one.neighbors().builds < builds + kBuilds) {  // each build from the positions
+    const std::uint64_t before = one.neighbors().builds;
     one.advance();
+    if (one.neighbors().builds != before) listed += one.neighbors().size();
     ++steps;
   }
   const std::vector<double> expected = state_of(one);
@@ -140,11 +143,18 @@ TEST(EmulatedRanks, MigrationAfterABuildMatters) {
     } catch (const InstabilityError&) {
     }
     EXPECT_EQ(same, !drop) << (drop ? "migration left out, yet the same bits" : "not the bits of one process");
-    std::uint64_t migrated = 0, gathered = 0, position_gathers = 0;
+    std::uint64_t migrated = 0, gathered = 0, position_gathers = 0, list_values = 0;
     for (int r = 0; r < many.ranks(); ++r) {
       migrated += many.rank(r).serial_work().migrated_values;
       gathered += many.rank(r).serial_work().gathered_values;
       position_gathers += many.rank(r).serial_work().position_gathers;
+      EXPECT_GT(many.rank(r).serial_work().list_values, 0u) << "rank " << r << " searched no share of the list";
+      list_values += many.rank(r).serial_work().list_values;
+    }
+    // Each rank searched its share of each build and sent its pairs (two indices each) to the
+    // two others: every pair searched once.
+    if (!drop) {
+      EXPECT_EQ(list_values, 2 * 2 * listed);
     }
     EXPECT_EQ(position_gathers, 3 * kBuilds) << "each rank gathers the positions for each build";
     std::cout << migrated << " values migrated\n";

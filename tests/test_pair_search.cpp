@@ -93,6 +93,33 @@ TEST(StripeRanks, CoverTheRanksThatTheListGives) {
   }
 }
 
+// The ranks' shares of the search: whole chunks, each once, in order, with about as many discs
+// each (at most one chunk's discs more than an even share); more shares than chunks leave some
+// empty.
+TEST(PairSearch, RangesByDiscsCoverEveryChunkOnceAndShareTheDiscs) {
+  World w = testing::mixed_heap();
+  const Discs& d = w.discs();
+  const CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan_discs(d).r_max + w.neighbors().skin));
+  const PairChunks chunks = pair_chunks(bins.grid);
+  const CellGrid& g = bins.grid;
+  auto discs_before = [&](std::int64_t k) {
+    return static_cast<double>(bins.cell_start[static_cast<std::size_t>(std::min(g.nu(), k * chunks.stripes_per_chunk) * g.nv())]);
+  };
+  double largest_chunk = 0;
+  for (std::int64_t k = 0; k < chunks.count; ++k) largest_chunk = std::max(largest_chunk, discs_before(k + 1) - discs_before(k));
+  for (const int shares : {1, 2, 3, 5, static_cast<int>(chunks.count), static_cast<int>(chunks.count) + 7}) {
+    const auto bounds = chunk_ranges_by_discs(bins, shares);
+    ASSERT_EQ(bounds.size(), static_cast<std::size_t>(shares) + 1);
+    EXPECT_EQ(bounds.front(), 0);
+    EXPECT_EQ(bounds.back(), chunks.count);
+    EXPECT_TRUE(std::is_sorted(bounds.begin(), bounds.end()));
+    for (int r = 0; r < shares; ++r) {
+      const double share = discs_before(bounds[static_cast<std::size_t>(r) + 1]) - discs_before(bounds[static_cast<std::size_t>(r)]);
+      EXPECT_LE(share, static_cast<double>(d.size()) / shares + largest_chunk) << shares << " shares, share " << r;
+    }
+  }
+}
+
 TEST(PairSearch, AnEmptyRangeFindsNothing) {
   World w = testing::mixed_heap(2, 10, 10);
   const Discs& d = w.discs();

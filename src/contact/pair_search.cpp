@@ -75,6 +75,24 @@ std::vector<ChunkPairs> search_pair_chunks(const CellBins& bins, const Discs& d,
   return found;
 }
 
+std::vector<std::int64_t> chunk_ranges_by_discs(const CellBins& bins, int shares) {
+  const CellGrid& g = bins.grid;
+  const PairChunks chunks = pair_chunks(g);
+  const auto discs_before = [&](std::int64_t k) {  // discs in the stripes of chunks [0, k)
+    const std::int64_t stripe = std::min(g.nu(), k * chunks.stripes_per_chunk);
+    return static_cast<std::uint64_t>(bins.cell_start[static_cast<std::size_t>(stripe * g.nv())]);
+  };
+  const std::uint64_t total = discs_before(chunks.count);
+  std::vector<std::int64_t> bounds(static_cast<std::size_t>(shares) + 1, chunks.count);
+  bounds[0] = 0;
+  std::int64_t k = 0;
+  for (int r = 1; r < shares; ++r) {  // the first chunk with at least r / shares of the discs before it
+    while (k < chunks.count && discs_before(k) * static_cast<std::uint64_t>(shares) < r * total) ++k;
+    bounds[static_cast<std::size_t>(r)] = k;
+  }
+  return bounds;
+}
+
 PairSearchResult join_pair_chunks(NeighborList& L, const std::vector<ChunkPairs>& found,
                                   std::int64_t stripes_per_chunk) {
   PairSearchResult result;

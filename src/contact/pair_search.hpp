@@ -54,6 +54,12 @@ struct ChunkPairs {
 std::vector<ChunkPairs> search_pair_chunks(const CellBins& bins, const Discs& discs, double skin, std::int64_t begin,
                                            std::int64_t end);
 
+// The chunks cut into `shares` ranges of whole chunks with about as many discs each (a disc
+// counted in the chunk of its stripe), as `shares` + 1 bounds: share r searches chunks
+// [bounds[r], bounds[r + 1]). A rule of the bins alone, so alike in every copy; any cut lists
+// the same pairs (only the balance of the search changes).
+std::vector<std::int64_t> chunk_ranges_by_discs(const CellBins& bins, int shares);
+
 // Joins every chunk's pairs, in chunk order, into list.first, second and chunk_start, and
 // tells what the search saw (the worst overlap: the first chunk's on a tie).
 PairSearchResult join_pair_chunks(NeighborList& list, const std::vector<ChunkPairs>& found,

@@ -2,6 +2,7 @@
 // What a rank's step (rank_step.cpp) reaches inside its copy of the World: the state it
 // exchanges and the parts of World::advance it runs around its own phases. The World's friend
 // for this module alone, as tests/world_internals.hpp is for the tests.
+#include "world/contact_rebuild.hpp"
 #include "world/world.hpp"
 
 namespace orogen {
@@ -26,7 +27,11 @@ struct RankAccess {
         neighbors(w.neighbors_), contacts(w.contacts_), forces(w.scratch_.forces), moved(w.moved_), dt(w.dt_),
         bonds(w.bonds_), bond_scratch(w.bond_scratch_) {}
 
-  void rebuild_if_stale() { world.rebuild_if_stale(); }
+  // A list build in two parts around the pair search, which the ranks cut between them.
+  void begin_list_build(PendingBuild& build) { world.begin_list_build(build); }
+  void finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks) {
+    world.finish_list_build(build, chunks);
+  }
   // What the contact stages read besides the discs, as World::step_stages prepares it: in a
   // world of materials each disc's friction from its slip (current for the discs this rank reads:
   // they came with the ghosts) and that slip for weakening walls; the rolling histories.

@@ -15,6 +15,7 @@ namespace orogen {
 namespace {
 
 constexpr std::size_t kBreakValues = 4;  // bond index, midpoint x and y, mode
+constexpr std::size_t kChunkHeader = 5;  // a searched chunk's pairs that touch, apart, worst overlap and its discs
 
 // A ghost: x, y, vx, vy, omega (what the force phases read); a sum: fx, fy, torque. In a world
 // of materials both carry the disc's slip too (its friction in the step; a running sum).
@@ -67,6 +68,9 @@ void RankStep::post(Phase phase) {
     case Phase::Build:
       post_build();
       break;
+    case Phase::Search:
+      post_search();
+      break;
     case Phase::Migration:
       if (migrate_ && !dropped(Exchange::Migration)) send_migration();
       break;
@@ -118,6 +122,9 @@ void RankStep::take(Phase phase) {
   switch (phase) {
     case Phase::Build:
       take_build();
+      break;
+    case Phase::Search:
+      take_search();
       break;
     case Phase::Migration:
       if (migrate_ && !dropped(Exchange::Migration)) receive_migration();
@@ -172,7 +179,6 @@ void RankStep::post_build() {
 }
 
 void RankStep::take_build() {
-  PreviousKeepers keepers;
   if (migrate_) {
     Stopwatch watch(serial_.gather_seconds);
     for (int q = 0; q < ranks_; ++q) {
@@ -181,19 +187,87 @@ void RankStep::take_build() {
       transport_->receive(q, buffer_);
       unpack_build_state(access_, plan_, q, buffer_);
     }
-    keepers = record_keepers(access_, plan_);  // before the build re-orders what they name
+    keepers_ = record_keepers(access_, plan_);  // before the build re-orders what they name
   }
   if (build_) {
-    // Every copy builds the list of one process, sort included: what the build reads (the
-    // positions, the masses) is current in every copy.
+    // Every copy bins and sorts as one process: what that reads (the positions, the radii) is
+    // current in every copy. The search is cut by the discs in each chunk, alike in every copy.
     Stopwatch watch(serial_.build_seconds);
-    access_.rebuild_if_stale();
+    access_.begin_list_build(pending_);
+    search_ranges_ = chunk_ranges_by_discs(pending_.bins, ranks_);
+  }
+}
+
+void RankStep::post_search() {
+  if (!build_) return;
+  {
+    Stopwatch watch(serial_.build_seconds), search(serial_.search_seconds);
+    const auto r = static_cast<std::size_t>(rank_);
+    searched_ = search_pair_chunks(pending_.bins, access_.discs, access_.neighbors.skin, search_ranges_[r],
+                                   search_ranges_[r + 1]);
+  }
+  if (ranks_ == 1 || searched_.empty()) return;
+  // Two buffers to every rank: each chunk's counts and worst overlap, then its pair indices.
+  buffer_.clear();
+  for (const ChunkPairs& c : searched_)
+    buffer_.insert(buffer_.end(), {static_cast<double>(c.first.size()), static_cast<double>(c.apart_first.size()),
+                                   c.stats.max_overlap_ratio, static_cast<double>(c.stats.worst_a),
+                                   static_cast<double>(c.stats.worst_b)});
+  for (int q = 0; q < ranks_; ++q)
+    if (q != rank_) transport_->send(q, buffer_);
+  buffer_.clear();
+  for (const ChunkPairs& c : searched_)
+    for (const auto* part : {&c.first, &c.second, &c.apart_first, &c.apart_second})
+      buffer_.insert(buffer_.end(), part->begin(), part->end());
+  for (int q = 0; q < ranks_; ++q)
+    if (q != rank_) transport_->send(q, buffer_);
+  serial_.list_values += buffer_.size() * static_cast<std::size_t>(ranks_ - 1);
+}
+
+void RankStep::take_search() {
+  if (build_) {
+    Stopwatch watch(serial_.build_seconds);
+    const auto chunks = static_cast<std::size_t>(search_ranges_.back());
+    std::vector<ChunkPairs> all(chunks);
+    for (int q = 0; q < ranks_; ++q) {
+      const auto begin = static_cast<std::size_t>(search_ranges_[static_cast<std::size_t>(q)]);
+      const auto end = static_cast<std::size_t>(search_ranges_[static_cast<std::size_t>(q) + 1]);
+      if (q == rank_) {
+        std::move(searched_.begin(), searched_.end(), all.begin() + static_cast<std::ptrdiff_t>(begin));
+        continue;
+      }
+      if (begin == end) continue;
+      buffer_.resize(kChunkHeader * (end - begin));
+      transport_->receive(q, buffer_);
+      std::size_t values = 0;
+      for (std::size_t k = begin; k < end; ++k) {
+        const double* h = buffer_.data() + kChunkHeader * (k - begin);
+        ChunkPairs& c = all[k];
+        c.first.resize(static_cast<std::size_t>(h[0]));
+        c.second.resize(c.first.size());
+        c.apart_first.resize(static_cast<std::size_t>(h[1]));
+        c.apart_second.resize(c.apart_first.size());
+        c.stats.max_overlap_ratio = h[2];
+        c.stats.worst_a = static_cast<std::uint32_t>(h[3]);
+        c.stats.worst_b = static_cast<std::uint32_t>(h[4]);
+        values += 2 * (c.first.size() + c.apart_first.size());
+      }
+      buffer_.resize(values);
+      transport_->receive(q, buffer_);
+      const double* v = buffer_.data();
+      for (std::size_t k = begin; k < end; ++k)
+        for (auto* part : {&all[k].first, &all[k].second, &all[k].apart_first, &all[k].apart_second})
+          for (auto& i : *part) i = static_cast<std::uint32_t>(*v++);
+    }
+    access_.finish_list_build(pending_, all);
+    pending_ = {};
     ++serial_.builds;
   }
   // The bonds re-ordered (after a build, or new bonds): their routes too.
   const bool bonds_moved = access_.prepare_bonds();
   if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds || bonds_moved) make_plan();
-  if (migrate_) migration_ = find_migration(access_, keepers, plan_);
+  if (migrate_) migration_ = find_migration(access_, keepers_, plan_);
+  keepers_ = {};
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
 }
 

@@ -4,9 +4,12 @@
 // cut into phases at the places where a thread of one process would read what another wrote;
 // each phase first computes and sends (post), then receives (take). Every floating-point
 // operation then has the operands, and the order, of one process: the same bits.
-//   Build        a stale list: every rank's positions (and bonds' state) to every rank, the same
-//                build in each copy, a new cut and plan (exchange_plan.hpp); where the copy was
-//                whole already (a stage gathered it), no exchange
+//   Build        a stale list: every rank's positions (and bonds' state) to every rank (where the
+//                copy was whole already, a stage gathered it, no exchange); each copy bins and
+//                sorts the discs as one process
+//   Search       each rank searches its range of the list's chunks (cut by the discs in them)
+//                and sends its pairs to every rank; every copy joins them into the list of one
+//                process, finishes the build alike, and makes a new cut and plan (exchange_plan.hpp)
 //   Migration    after a build from positions: the motion, body state and contact histories each
 //                rank kept current, to the rank that keeps them under the new plan (migration.hpp)
 //   Ghosts       the motion of the discs this rank reads but another moved
@@ -32,16 +35,17 @@
 #include "boundary/wall_forces.hpp"
 #include "contact/pair_forces.hpp"
 #include "parallel/exchange_plan.hpp"
+#include "world/contact_rebuild.hpp"
 #include "parallel/migration.hpp"
 #include "parallel/rank_access.hpp"
 #include "parallel/rank_transport.hpp"
 
 namespace orogen {
 
-enum class Phase : std::uint8_t { Build, Migration, Ghosts, EvenPairs, OddPairs, Walls, Integration };
-inline constexpr std::array<Phase, 7> kStepPhases = {Phase::Build,    Phase::Migration, Phase::Ghosts,
-                                                     Phase::EvenPairs, Phase::OddPairs, Phase::Walls,
-                                                     Phase::Integration};
+enum class Phase : std::uint8_t { Build, Search, Migration, Ghosts, EvenPairs, OddPairs, Walls, Integration };
+inline constexpr std::array<Phase, 8> kStepPhases = {Phase::Build,     Phase::Search,   Phase::Migration,
+                                                     Phase::Ghosts,    Phase::EvenPairs, Phase::OddPairs,
+                                                     Phase::Walls,     Phase::Integration};
 
 // std::invalid_argument naming what a step over ranks does not run yet (hooks inside the step
 // other than a pin). Check the world given, not a copy: a copy drops its hooks.
@@ -74,11 +78,14 @@ class RankStep {
   // What a run over ranks costs beyond its slab's work, for the log: the gathers of every
   // rank's state (its positions before list builds, the whole in make_whole), the doubles this
   // rank sent in them, the doubles it sent in migrations after builds, and the seconds it spent
-  // in gathers and migrations and in building the whole list.
+  // in gathers and migrations and in the builds (the part every copy runs whole, its share of
+  // the search), and the doubles it sent of its share of the list (pair indices) to the others.
   struct SerialWork {
     std::uint64_t gathers = 0, gathered_values = 0, builds = 0, migrated_values = 0;
     std::uint64_t position_gathers = 0;  // of them, gathers of the positions (and bonds) alone
+    std::uint64_t list_values = 0;
     double gather_seconds = 0, build_seconds = 0;
+    double search_seconds = 0;  // of build_seconds, in this rank's share of the pair search
   };
   const SerialWork& serial_work() const { return serial_; }
 
@@ -91,6 +98,9 @@ class RankStep {
   bool dropped(Exchange e) const { return dropped_[static_cast<std::size_t>(e)]; }
   void post_build();
   void take_build();
+  // This rank's chunks of the list searched and sent; every rank's joined, the build finished.
+  void post_search();
+  void take_search();
   void make_plan();
   void send_migration();
   void receive_migration();
@@ -127,6 +137,10 @@ class RankStep {
   bool build_ = false;  // this step rebuilds the list
   bool migrate_ = false;  // ... from the positions alone: the state then migrates (migration.hpp)
   Migration migration_;
+  PreviousKeepers keepers_;
+  PendingBuild pending_;
+  std::vector<std::int64_t> search_ranges_;  // each rank's chunks of the search: ranks + 1 bounds
+  std::vector<ChunkPairs> searched_;
   double max2_ = 0;
   double not_finite_ = 0;
   ThreadSplit threads_cut_;

@@ -13,33 +13,36 @@
 
 namespace orogen {
 
-BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clusters& c,
-                            const std::vector<Wall>& walls, const ContactLaw& law, double dt, bool sort) {
+PendingBuild begin_rebuild(const NeighborList& L, const ContactStore& store, Discs& d, Clusters& c, bool sort) {
+  PendingBuild build;
   const DiscScan scan = scan_discs(d);
   if (!scan.finite) {
-    BuildStats stats;
-    stats.finite = false;
-    return stats;
+    build.finite = false;
+    return build;
   }
   // Index the old histories by stable ids before indices change.
   const std::int64_t max_id = std::max(scan.max_id, max_stored_id(store));
-  const HistoryCarry pair_history = index_pair_history(store.pairs, store.pairs.xi, max_id);
-  const HistoryCarry wall_history = index_wall_history(store.walls, max_id);
-  const bool rolling = !store.pairs.roll.empty();  // kept only while some contact resists rolling
-  const HistoryCarry rolling_history = rolling ? index_pair_history(store.pairs, store.pairs.roll, max_id) : HistoryCarry{};
+  build.pair_history = index_pair_history(store.pairs, store.pairs.xi, max_id);
+  build.wall_history = index_wall_history(store.walls, max_id);
+  build.rolling = !store.pairs.roll.empty();  // kept only while some contact resists rolling
+  if (build.rolling) build.rolling_history = index_pair_history(store.pairs, store.pairs.roll, max_id);
 
-  CellBins bins = bin_discs(d, make_grid(d, 2.0 * scan.r_max + L.skin));
-  if (sort) sort_discs_by_cell(bins, d, c);
+  build.bins = bin_discs(d, make_grid(d, 2.0 * scan.r_max + L.skin));
+  build.sort = sort;
+  if (sort) sort_discs_by_cell(build.bins, d, c);
+  return build;
+}
 
-  const PairSearchResult search = search_pairs(L, bins, d);
-  carry_pair_history(store.pairs, L, d, pair_history);
-  if (rolling) carry_rolling_history(store.pairs, rolling_history);
+BuildStats finish_rebuild(PendingBuild& build, const PairSearchResult& search, NeighborList& L, ContactStore& store,
+                          Discs& d, Clusters& c, const std::vector<Wall>& walls, const ContactLaw& law, double dt) {
+  carry_pair_history(store.pairs, L, d, build.pair_history);
+  if (build.rolling) carry_rolling_history(store.pairs, build.rolling_history);
   prepare_damping(law, d, c, dt);  // the damping table is filled serially, read in parallel
   set_pair_damping(store.pairs, L, d, c, law, dt);
-  set_chunk_hints(L, search, bins, sort);
+  set_chunk_hints(L, search, build.bins, build.sort);
 
   search_wall_contacts(store.walls, d, walls, L.skin);
-  carry_wall_history(store.walls, wall_history);
+  carry_wall_history(store.walls, build.wall_history);
   set_wall_damping(store.walls, d, c, law, dt);
   set_traction_mass(store.walls, d, c, walls);
 
@@ -47,6 +50,18 @@ BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clus
   ++L.builds;
   L.valid = true;
   return search.stats;
+}
+
+BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clusters& c,
+                            const std::vector<Wall>& walls, const ContactLaw& law, double dt, bool sort) {
+  PendingBuild build = begin_rebuild(L, store, d, c, sort);
+  if (!build.finite) {
+    BuildStats stats;
+    stats.finite = false;
+    return stats;
+  }
+  const PairSearchResult search = search_pairs(L, build.bins, d);
+  return finish_rebuild(build, search, L, store, d, c, walls, law, dt);
 }
 
 bool contacts_stale(const NeighborList& L, const Discs& d, const std::vector<Wall>& walls, double moved) {

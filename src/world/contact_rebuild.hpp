@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "boundary/wall.hpp"
+#include "contact/history_carry.hpp"
 #include "contact/contact_law.hpp"
 #include "contact/contact_store.hpp"
 #include "contact/neighbor_list.hpp"
@@ -19,6 +20,24 @@ namespace orogen {
 // the reference positions. With a non-finite position it stops at once and changes nothing.
 BuildStats rebuild_contacts(NeighborList& list, ContactStore& store, Discs& discs, Clusters& clusters,
                             const std::vector<Wall>& walls, const ContactLaw& law, double dt, bool sort);
+
+// The same build in two parts around the pair search, for a build whose chunks are searched
+// apart (over ranks, docs/domain-decomposition.md): begin_rebuild indexes the old histories
+// and bins (and sorts) the discs; the caller fills list.first, second and chunk_start from the
+// bins (search_pairs, or chunks searched apart and joined); finish_rebuild does the rest.
+// rebuild_contacts is the three in turn.
+struct PendingBuild {
+  bool finite = true;  // false: a position is not finite, nothing was changed, stop
+  bool sort = false;
+  bool rolling = false;
+  HistoryCarry pair_history, wall_history, rolling_history;
+  CellBins bins;
+};
+PendingBuild begin_rebuild(const NeighborList& list, const ContactStore& store, Discs& discs, Clusters& clusters,
+                           bool sort);
+BuildStats finish_rebuild(PendingBuild& build, const PairSearchResult& search, NeighborList& list, ContactStore& store,
+                          Discs& discs, Clusters& clusters, const std::vector<Wall>& walls, const ContactLaw& law,
+                          double dt);
 
 // Whether the next step must rebuild: the list is stale, or some disc (displacement `moved`,
 // from integration) plus the walls moved more than half the skin since the last build.

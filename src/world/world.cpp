@@ -79,8 +79,27 @@ void World::advance() {
 
 void World::rebuild_if_stale() {
   if (!contacts_stale()) return;
-  const bool sort = sort_every_ > 0 && neighbors_.builds % static_cast<std::uint64_t>(sort_every_) == 0;
-  check_build(rebuild_contacts(sort), *this);
+  check_build(rebuild_contacts(sort_at_next_build()), *this);
+}
+
+bool World::sort_at_next_build() const {
+  return sort_every_ > 0 && neighbors_.builds % static_cast<std::uint64_t>(sort_every_) == 0;
+}
+
+void World::begin_list_build(PendingBuild& build) {
+  build = begin_rebuild(neighbors_, contacts_, discs_, clusters_, sort_at_next_build());
+  if (!build.finite) {
+    BuildStats stats;
+    stats.finite = false;
+    check_build(stats, *this);
+  }
+}
+
+void World::finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks) {
+  const PairSearchResult search = join_pair_chunks(neighbors_, chunks, pair_chunks(build.bins.grid).stripes_per_chunk);
+  const BuildStats stats = finish_rebuild(build, search, neighbors_, contacts_, discs_, clusters_, walls_, law_, dt_);
+  after_list_build();
+  check_build(stats, *this);
 }
 
 void World::finish_step() {
@@ -211,13 +230,17 @@ bool World::contacts_stale() const { return orogen::contacts_stale(neighbors_, d
 
 BuildStats World::rebuild_contacts(bool sort) {
   const BuildStats stats = orogen::rebuild_contacts(neighbors_, contacts_, discs_, clusters_, walls_, law_, dt_, sort);
+  after_list_build();
+  return stats;
+}
+
+void World::after_list_build() {
   moved_ = 0;  // no disc has moved since this build
   if (!bonds_.id_a.empty()) {  // the build may have re-ordered the discs, a removal compacted them
     std::vector<std::int64_t> index_of_id(static_cast<std::size_t>(next_disc_id_), -1);
     for (std::size_t i = 0; i < discs_.size(); ++i) index_of_id[static_cast<std::size_t>(discs_.id[i])] = static_cast<std::int64_t>(i);
     remap_bonds(bonds_, index_of_id);
   }
-  return stats;
 }
 
 std::size_t World::remove(std::span<const std::uint8_t> flags, RemovalReason reason) {

@@ -38,6 +38,7 @@
 namespace orogen {
 
 class ArchiveReader;
+struct PendingBuild;
 class ArchiveWriter;
 struct WallSlip;
 
@@ -292,6 +293,12 @@ class World {
   // own force and integration phases: the list rebuilt if stale; the walls moved, the clock on.
   void rebuild_if_stale();
   void finish_step();
+  // The build of rebuild_if_stale in two parts around the pair search, which a step over ranks
+  // cuts between its ranks (parallel/rank_step.cpp); InstabilityError as rebuild_if_stale.
+  void begin_list_build(PendingBuild& build);
+  void finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks);  // joined as search_pairs
+  bool sort_at_next_build() const;
+  void after_list_build();  // the displacement since the build zeroed, the bonds re-indexed
   // Rolling resistance in this step: the store's rolling histories kept or dropped, and in a world
   // of materials each disc's coefficient (docs/model.md "Rolling resistance").
   bool resists_rolling() const;
