@@ -82,19 +82,40 @@ void prepare_bond_scratch(Bonds& B, const Discs& d, std::uint64_t build, BondScr
 
 void apply_bond_forces(Bonds& B, const Discs& d, BondScratch& s, DiscForce* force, std::uint64_t step,
                        double time) {
+  // The acting bonds come in order of their first disc (prepare_bond_scratch), so a run of bonds
+  // shares disc a: its sum is carried in registers over the run and stored once. The adds to
+  // each disc keep their order (no bond of the run adds to a through b), so the bits are the
+  // same. Unaliased pointers, and the rare breaks logged in a second pass, let the sums stay in
+  // registers (with the log's push_back in the loop every value was reloaded after each store).
+  const std::uint32_t* __restrict ia = B.a.data();
+  const std::uint32_t* __restrict ib = B.b.data();
+  const double *__restrict fx = s.fx.data(), *__restrict fy = s.fy.data();
+  const double *__restrict ta = s.torque_a.data(), *__restrict tb = s.torque_b.data();
+  const std::int64_t* __restrict broken = s.broken.data();
+  DiscForce* __restrict out = force;
+  const std::size_t acting = s.acting;
   bool any_broken = false;
-  for (std::size_t k = 0; k < s.acting; ++k) {
-    const auto a = B.a[k], b = B.b[k];
-    if (s.broken[k]) {
-      any_broken = true;
-      B.breaks.push_back({step, time, B.id_a[k], B.id_b[k], 0.5 * (d.x[a] + d.x[b]), 0.5 * (d.y[a] + d.y[b]),
-                          static_cast<BondBreakMode>(s.broken[k] - 1)});
-      continue;
+  for (std::size_t k = 0; k < acting;) {
+    const auto a = ia[k];
+    DiscForce sum_a = out[a];
+    for (; k < acting && ia[k] == a; ++k) {
+      if (broken[k]) {
+        any_broken = true;
+        continue;
+      }
+      const auto b = ib[k];
+      sum_a.fx -= fx[k]; sum_a.fy -= fy[k]; sum_a.torque += ta[k];
+      out[b].fx += fx[k]; out[b].fy += fy[k]; out[b].torque += tb[k];
     }
-    force[a].fx -= s.fx[k]; force[a].fy -= s.fy[k]; force[a].torque += s.torque_a[k];
-    force[b].fx += s.fx[k]; force[b].fy += s.fy[k]; force[b].torque += s.torque_b[k];
+    out[a] = sum_a;
   }
   if (!any_broken) return;
+  for (std::size_t k = 0; k < acting; ++k) {
+    if (!broken[k]) continue;
+    const auto a = ia[k], b = ib[k];
+    B.breaks.push_back({step, time, B.id_a[k], B.id_b[k], 0.5 * (d.x[a] + d.x[b]), 0.5 * (d.y[a] + d.y[b]),
+                        static_cast<BondBreakMode>(broken[k] - 1)});
+  }
   std::vector<std::uint8_t> keep(B.size(), 1);
   std::size_t gone = 0;
   for (std::size_t k = 0; k < s.acting; ++k) {
