@@ -53,6 +53,15 @@ TEST(EmulatedRanks, AnyNumberOfRanksStepsAsOneProcess) {
   for (int ranks : {1, 2, 3, 4}) expect_same_run(start, ranks, {}, 300, 25);
 }
 
+// More ranks than chunks: some ranks search no chunk of the list (nor step any pair), and the
+// others' pairs still reach them.
+TEST(EmulatedRanks, RanksWithoutAShareOfTheSearchStepAsOneProcess) {
+  const World start = mixed_heap(3, 6, 2000);
+  const std::size_t chunks = start.neighbors().chunk_start.size() - 1;
+  ASSERT_LT(chunks, 20u);  // a few ranks more than chunks
+  expect_same_run(start, static_cast<int>(chunks) + 2, {}, 300, 25);
+}
+
 // Rolling resistance (docs/model.md): a second history per pair, owned and gathered as the first.
 TEST(EmulatedRanks, RollingResistanceStepsAsOneProcess) {
   World start = mixed_heap();
