@@ -1,6 +1,7 @@
 #include "parallel/rank_step.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <stdexcept>
 #include <utility>
@@ -15,6 +16,18 @@ namespace orogen {
 namespace {
 
 constexpr std::size_t kBreakValues = 4;  // bond index, midpoint x and y, mode
+// A pair's two disc indices in one double, bit for bit (the transport carries doubles): the
+// first in the high half. An index stays below 2^31 (the discs are at most 50 million), so
+// the bits are never a NaN or an infinity, which a copy might alter; a copy keeps all others.
+double pack_pair(std::uint32_t first, std::uint32_t second) {
+  return std::bit_cast<double>(std::uint64_t{first} << 32 | second);
+}
+void unpack_pair(double packed, std::uint32_t& first, std::uint32_t& second) {
+  const auto bits = std::bit_cast<std::uint64_t>(packed);
+  first = static_cast<std::uint32_t>(bits >> 32);
+  second = static_cast<std::uint32_t>(bits);
+}
+
 constexpr std::size_t kChunkHeader = 5;  // a searched chunk's pairs that touch, apart, worst overlap and its discs
 
 // A ghost: x, y, vx, vy, omega (what the force phases read); a sum: fx, fy, torque. In a world
@@ -207,7 +220,8 @@ void RankStep::post_search() {
                                    search_ranges_[r + 1]);
   }
   if (ranks_ == 1 || searched_.empty()) return;
-  // Two buffers to every rank: each chunk's counts and worst overlap, then its pair indices.
+  if (access_.discs.size() >= (std::size_t{1} << 31)) throw std::logic_error("too many discs to send a pair as one double");
+  // Two buffers to every rank: each chunk's counts and worst overlap, then its pairs.
   buffer_.clear();
   for (const ChunkPairs& c : searched_)
     buffer_.insert(buffer_.end(), {static_cast<double>(c.first.size()), static_cast<double>(c.apart_first.size()),
@@ -216,9 +230,11 @@ void RankStep::post_search() {
   for (int q = 0; q < ranks_; ++q)
     if (q != rank_) transport_->send(q, buffer_);
   buffer_.clear();
-  for (const ChunkPairs& c : searched_)
-    for (const auto* part : {&c.first, &c.second, &c.apart_first, &c.apart_second})
-      buffer_.insert(buffer_.end(), part->begin(), part->end());
+  for (const ChunkPairs& c : searched_) {
+    for (std::size_t p = 0; p < c.first.size(); ++p) buffer_.push_back(pack_pair(c.first[p], c.second[p]));
+    for (std::size_t p = 0; p < c.apart_first.size(); ++p)
+      buffer_.push_back(pack_pair(c.apart_first[p], c.apart_second[p]));
+  }
   for (int q = 0; q < ranks_; ++q)
     if (q != rank_) transport_->send(q, buffer_);
   serial_.list_values += buffer_.size() * static_cast<std::size_t>(ranks_ - 1);
@@ -250,14 +266,14 @@ void RankStep::take_search() {
         c.stats.max_overlap_ratio = h[2];
         c.stats.worst_a = static_cast<std::uint32_t>(h[3]);
         c.stats.worst_b = static_cast<std::uint32_t>(h[4]);
-        values += 2 * (c.first.size() + c.apart_first.size());
+        values += c.first.size() + c.apart_first.size();
       }
       buffer_.resize(values);
       transport_->receive(q, buffer_);
       const double* v = buffer_.data();
       for (std::size_t k = begin; k < end; ++k)
-        for (auto* part : {&all[k].first, &all[k].second, &all[k].apart_first, &all[k].apart_second})
-          for (auto& i : *part) i = static_cast<std::uint32_t>(*v++);
+        for (auto [first, second] : {std::pair{&all[k].first, &all[k].second}, std::pair{&all[k].apart_first, &all[k].apart_second}})
+          for (std::size_t p = 0; p < first->size(); ++p) unpack_pair(*v++, (*first)[p], (*second)[p]);
     }
     access_.finish_list_build(pending_, all);
     pending_ = {};
