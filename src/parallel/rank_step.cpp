@@ -243,37 +243,14 @@ void RankStep::post_search() {
 void RankStep::take_search() {
   if (build_) {
     Stopwatch watch(serial_.build_seconds);
-    const auto chunks = static_cast<std::size_t>(search_ranges_.back());
-    std::vector<ChunkPairs> all(chunks);
+    std::vector<ChunkPairs> all(static_cast<std::size_t>(search_ranges_.back()));
     for (int q = 0; q < ranks_; ++q) {
       const auto begin = static_cast<std::size_t>(search_ranges_[static_cast<std::size_t>(q)]);
       const auto end = static_cast<std::size_t>(search_ranges_[static_cast<std::size_t>(q) + 1]);
-      if (q == rank_) {
+      if (q == rank_)
         std::move(searched_.begin(), searched_.end(), all.begin() + static_cast<std::ptrdiff_t>(begin));
-        continue;
-      }
-      if (begin == end) continue;
-      buffer_.resize(kChunkHeader * (end - begin));
-      transport_->receive(q, buffer_);
-      std::size_t values = 0;
-      for (std::size_t k = begin; k < end; ++k) {
-        const double* h = buffer_.data() + kChunkHeader * (k - begin);
-        ChunkPairs& c = all[k];
-        c.first.resize(static_cast<std::size_t>(h[0]));
-        c.second.resize(c.first.size());
-        c.apart_first.resize(static_cast<std::size_t>(h[1]));
-        c.apart_second.resize(c.apart_first.size());
-        c.stats.max_overlap_ratio = h[2];
-        c.stats.worst_a = static_cast<std::uint32_t>(h[3]);
-        c.stats.worst_b = static_cast<std::uint32_t>(h[4]);
-        values += c.first.size() + c.apart_first.size();
-      }
-      buffer_.resize(values);
-      transport_->receive(q, buffer_);
-      const double* v = buffer_.data();
-      for (std::size_t k = begin; k < end; ++k)
-        for (auto [first, second] : {std::pair{&all[k].first, &all[k].second}, std::pair{&all[k].apart_first, &all[k].apart_second}})
-          for (std::size_t p = 0; p < first->size(); ++p) unpack_pair(*v++, (*first)[p], (*second)[p]);
+      else if (begin < end)
+        receive_searched(q, std::span(all).subspan(begin, end - begin));
     }
     access_.finish_list_build(pending_, all);
     pending_ = {};
@@ -285,6 +262,31 @@ void RankStep::take_search() {
   if (migrate_) migration_ = find_migration(access_, keepers_, plan_);
   keepers_ = {};
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
+}
+
+void RankStep::receive_searched(int q, std::span<ChunkPairs> chunks) {
+  buffer_.resize(kChunkHeader * chunks.size());
+  transport_->receive(q, buffer_);
+  std::size_t pairs = 0;
+  for (std::size_t k = 0; k < chunks.size(); ++k) {
+    const double* h = buffer_.data() + kChunkHeader * k;
+    ChunkPairs& c = chunks[k];
+    c.first.resize(static_cast<std::size_t>(h[0]));
+    c.second.resize(c.first.size());
+    c.apart_first.resize(static_cast<std::size_t>(h[1]));
+    c.apart_second.resize(c.apart_first.size());
+    c.stats.max_overlap_ratio = h[2];
+    c.stats.worst_a = static_cast<std::uint32_t>(h[3]);
+    c.stats.worst_b = static_cast<std::uint32_t>(h[4]);
+    pairs += c.first.size() + c.apart_first.size();
+  }
+  buffer_.resize(pairs);
+  transport_->receive(q, buffer_);
+  const double* v = buffer_.data();
+  for (ChunkPairs& c : chunks) {
+    for (std::size_t p = 0; p < c.first.size(); ++p) unpack_pair(*v++, c.first[p], c.second[p]);
+    for (std::size_t p = 0; p < c.apart_first.size(); ++p) unpack_pair(*v++, c.apart_first[p], c.apart_second[p]);
+  }
 }
 
 void RankStep::send_migration() {

@@ -30,6 +30,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "boundary/wall_forces.hpp"
@@ -101,6 +102,7 @@ class RankStep {
   // This rank's chunks of the list searched and sent; every rank's joined, the build finished.
   void post_search();
   void take_search();
+  void receive_searched(int from, std::span<ChunkPairs> chunks);  // as post_search sent them
   void make_plan();
   void send_migration();
   void receive_migration();
