@@ -38,8 +38,8 @@
 namespace orogen {
 
 class ArchiveReader;
-struct PendingBuild;
 class ArchiveWriter;
+struct PendingBuild;
 struct WallSlip;
 
 // Whether any disc is flagged (flags by disc index, as World::remove takes them).
@@ -289,8 +289,9 @@ class World {
   friend struct WorldInternals;  // white-box tests of the engine (tests/world_internals.hpp)
   friend struct RankAccess;      // one rank's phases of a step over ranks (parallel/rank_access.hpp)
 
-  // The first and last parts of advance(), which a step over ranks (parallel/) runs around its
-  // own force and integration phases: the list rebuilt if stale; the walls moved, the clock on.
+  // The first and last parts of advance(): the list rebuilt if stale; the walls moved, the clock
+  // on. A step over ranks (parallel/) runs finish_step around its own phases, and the build in
+  // the two parts below.
   void rebuild_if_stale();
   void finish_step();
   // The build of rebuild_if_stale in two parts around the pair search, which a step over ranks
