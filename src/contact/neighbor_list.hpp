@@ -9,6 +9,7 @@
 // order (world/contact_rebuild.cpp).
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace orogen {
@@ -42,6 +43,13 @@ struct NeighborList {
   bool valid = false;
 
   std::size_t size() const { return first.size(); }
+};
+
+// A range [begin, end) of a list's pairs (end past the last: to the end); all of them by
+// default. Over ranks, one rank's chunks (docs/domain-decomposition.md).
+struct PairRange {
+  std::size_t begin = 0, end = std::numeric_limits<std::size_t>::max();
+  std::size_t end_in(std::size_t pairs) const { return end < pairs ? end : pairs; }
 };
 
 }  // namespace orogen

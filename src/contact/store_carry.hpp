@@ -15,14 +15,19 @@ namespace orogen {
 std::int64_t max_stored_id(const ContactStore& store);
 
 // Indexes the old pair (first id, second id) and wall (disc id, wall) histories; a pair history
-// is one value per pair (PairContacts::xi, or ::roll while it is kept).
-HistoryCarry index_pair_history(const PairContacts& pairs, std::span<const double> history, std::int64_t max_id);
+// is one value per pair (PairContacts::xi, or ::roll while it is kept). Only the pairs of
+// `indexed` (all by default; over ranks, the ones this rank kept current).
+HistoryCarry index_pair_history(const PairContacts& pairs, std::span<const double> history, std::int64_t max_id,
+                                PairRange indexed = {});
 HistoryCarry index_wall_history(const WallContacts& walls, std::int64_t max_id);
 
-// Sets the new pairs' stable ids (from the list and discs) and their carried histories.
-void carry_pair_history(PairContacts& pairs, const NeighborList& list, const Discs& discs, const HistoryCarry& old);
-// Sets the new pairs' rolling histories, after carry_pair_history has set their ids.
-void carry_rolling_history(PairContacts& pairs, const HistoryCarry& old);
+// Sets the new pairs' stable ids (from the list and discs), and their histories 0.
+void set_pair_ids(PairContacts& pairs, const NeighborList& list, const Discs& discs);
+// Carries the histories of the new pairs of `carried` (all by default), their ids set; over
+// ranks each rank carries its own chunks' (the others stay 0 in its copy).
+void carry_pair_history(PairContacts& pairs, const HistoryCarry& old, PairRange carried = {});
+// The same for the rolling histories (sized, and 0 outside `carried`).
+void carry_rolling_history(PairContacts& pairs, const HistoryCarry& old, PairRange carried = {});
 // Sets the new wall contacts' carried histories (their disc ids are set by their search).
 void carry_wall_history(WallContacts& walls, const HistoryCarry& old);
 

@@ -4,8 +4,6 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "contact/store_carry.hpp"
-
 namespace orogen {
 namespace {
 
@@ -14,15 +12,6 @@ template <class F>
 void for_each_range(const std::vector<std::ptrdiff_t>& bounds, F&& f) {
   for (std::size_t r = 0; r + 1 < bounds.size(); ++r)
     f(static_cast<std::int32_t>(r), static_cast<std::size_t>(bounds[r]), static_cast<std::size_t>(bounds[r + 1]));
-}
-
-// Calls f(r, first pair, end) for each rank's chunks of `plan`.
-template <class F>
-void for_each_pair_range(const NeighborList& L, const ExchangePlan& plan, F&& f) {
-  if (L.chunk_start.empty()) return;
-  for_each_range(plan.cut.chunk, [&](std::int32_t r, std::size_t c0, std::size_t c1) {
-    f(r, std::size_t{L.chunk_start[c0]}, std::size_t{L.chunk_start[c1]});
-  });
 }
 
 // By stable id, the rank `rank_of` gives the item of each index.
@@ -38,8 +27,9 @@ std::vector<std::int32_t> by_id(const Ids& ids, RankOf&& rank_of) {
 std::int32_t moved_from(std::int32_t before, std::int32_t after) { return before == after ? kNoRank : before; }
 
 // Calls f(from, to, value) for each value whose keeper changed, in one order for packing,
-// counting and unpacking: the discs' motion, the bodies' state, the pairs' and wall contacts'
-// histories (the positions and bonds came before the build).
+// counting and unpacking: the discs' motion, the bodies' state, the wall contacts' histories
+// (the positions and bonds came before the build; the pairs' histories go their own way,
+// pair_migration.hpp).
 template <class F>
 void for_each_moving_value(RankAccess& a, const Migration& m, const ExchangePlan& plan, F&& f) {
   Discs& d = a.discs;
@@ -59,16 +49,6 @@ void for_each_moving_value(RankAccess& a, const Migration& m, const ExchangePlan
         f(from, to, *v);
     }
   });
-  auto& xi = a.contacts.pairs.xi;
-  auto& roll = a.contacts.pairs.roll;  // empty unless some contact resists rolling
-  for_each_pair_range(a.neighbors, plan, [&](std::int32_t to, std::size_t p0, std::size_t p1) {
-    for (std::size_t p = p0; p < p1; ++p) {
-      const std::int32_t from = m.pair[p];
-      if (from == kNoRank) continue;
-      f(from, to, xi[p]);
-      if (!roll.empty()) f(from, to, roll[p]);
-    }
-  });
   WallContacts& wc = a.contacts.walls;
   for (std::size_t k = 0; k < wc.size(); ++k) {
     const std::int32_t from = m.wall[k], to = plan.wall_rank[wc.disc[k]];
@@ -85,14 +65,6 @@ PreviousKeepers record_keepers(RankAccess& a, const ExchangePlan& plan) {
   k.disc_wall = by_id(a.discs.id, [&](std::size_t i) { return plan.wall_rank[i]; });
   const std::vector<std::int32_t> body_rank = rank_of_ranges(plan.cut.body, a.clusters.size());
   k.body = by_id(a.clusters.id, [&](std::size_t b) { return body_rank[b]; });
-  // The pairs' keepers travel by the key their histories travel by, as a history that is never 0.
-  const PairContacts& pairs = a.contacts.pairs;
-  std::vector<double> keeper(pairs.size(), 0.0);
-  for_each_pair_range(a.neighbors, plan, [&](std::int32_t r, std::size_t p0, std::size_t p1) {
-    std::fill(keeper.begin() + static_cast<std::ptrdiff_t>(p0), keeper.begin() + static_cast<std::ptrdiff_t>(p1), r + 1.0);
-  });
-  const auto largest_id = static_cast<std::int64_t>(k.disc_step.size());
-  k.pair = index_pair_history(pairs, keeper, std::max(largest_id, max_stored_id(a.contacts)));
   return k;
 }
 
@@ -106,14 +78,6 @@ Migration find_migration(RankAccess& a, const PreviousKeepers& before, const Exc
   m.body.resize(a.clusters.size());
   for (std::size_t k = 0; k < a.clusters.size(); ++k)
     m.body[k] = moved_from(before.body[static_cast<std::size_t>(a.clusters.id[k])], body_rank[k]);
-  const PairContacts& pairs = a.contacts.pairs;
-  m.pair.assign(pairs.size(), kNoRank);
-  for_each_pair_range(a.neighbors, plan, [&](std::int32_t r, std::size_t p0, std::size_t p1) {
-    for (std::size_t p = p0; p < p1; ++p) {
-      const auto keeper = static_cast<std::int32_t>(before.pair.find(pairs.id_first[p], pairs.id_second[p])) - 1;
-      if (keeper != kNoRank) m.pair[p] = moved_from(keeper, r);  // a pair new in this build has no history anywhere
-    }
-  });
   const WallContacts& wc = a.contacts.walls;
   m.wall.resize(wc.size());
   for (std::size_t k = 0; k < wc.size(); ++k)

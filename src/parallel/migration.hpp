@@ -2,13 +2,13 @@
 // A list build over ranks without the whole state (docs/domain-decomposition.md, step 3): every
 // copy receives the positions (and the bonds' state) of every rank, builds the list of one
 // process, which re-orders the discs, bodies and contacts alike in every copy, and then each rank
-// sends the state it kept current (motion, bodies, contact histories) to the rank that keeps it
-// under the new plan: the migration. What stays with its keeper is not sent.
+// sends the state it kept current (motion, bodies, wall contacts' histories) to the rank that keeps it
+// under the new plan: the migration. What stays with its keeper is not sent. The pairs'
+// histories migrate apart (pair_migration.hpp): no copy looks up the whole list for them.
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include "contact/history_carry.hpp"
 #include "parallel/exchange_plan.hpp"
 #include "parallel/rank_access.hpp"
 
@@ -19,14 +19,13 @@ namespace orogen {
 struct PreviousKeepers {
   std::vector<std::int32_t> disc_step, disc_wall;  // by disc id: the rank that integrated it, its wall owner
   std::vector<std::int32_t> body;                  // by body id
-  HistoryCarry pair;                               // by pair key: the rank of its chunk + 1
 };
 PreviousKeepers record_keepers(RankAccess& world, const ExchangePlan& plan);
 
 // After the build and the new plan: by new index, the rank that kept each item whose keeper
 // changed (kNoRank where it did not, or for a contact new in this build: the same in every copy).
 struct Migration {
-  std::vector<std::int32_t> disc, body, pair, wall;
+  std::vector<std::int32_t> disc, body, wall;
 };
 Migration find_migration(RankAccess& world, const PreviousKeepers& before, const ExchangePlan& after);
 

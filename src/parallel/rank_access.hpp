@@ -28,9 +28,9 @@ struct RankAccess {
         bonds(w.bonds_), bond_scratch(w.bond_scratch_) {}
 
   // A list build in two parts around the pair search, which the ranks cut between them.
-  void begin_list_build(PendingBuild& build) { world.begin_list_build(build); }
-  void finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks) {
-    world.finish_list_build(build, chunks);
+  void begin_list_build(PendingBuild& build, PairRange indexed) { world.begin_list_build(build, indexed); }
+  void finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks, PairRange carried) {
+    world.finish_list_build(build, chunks, carried);
   }
   // What the contact stages read besides the discs, as World::step_stages prepares it: in a
   // world of materials each disc's friction from its slip (current for the discs this rank reads:

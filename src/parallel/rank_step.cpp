@@ -1,33 +1,22 @@
 #include "parallel/rank_step.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <stdexcept>
 #include <utility>
 
 #include "boundary/wall_forces.hpp"
 #include "contact/pair_forces.hpp"
+#include "contact/store_carry.hpp"
 #include "integrate/integrator.hpp"
 #include "parallel/owned_state.hpp"
+#include "parallel/packed_pair.hpp"
 #include "util/soa.hpp"
 
 namespace orogen {
 namespace {
 
 constexpr std::size_t kBreakValues = 4;  // bond index, midpoint x and y, mode
-// A pair's two disc indices in one double, bit for bit (the transport carries doubles): the
-// first in the high half. An index stays below 2^31 (the discs are at most 50 million), so
-// the bits are never a NaN or an infinity, which a copy might alter; a copy keeps all others.
-double pack_pair(std::uint32_t first, std::uint32_t second) {
-  return std::bit_cast<double>(std::uint64_t{first} << 32 | second);
-}
-void unpack_pair(double packed, std::uint32_t& first, std::uint32_t& second) {
-  const auto bits = std::bit_cast<std::uint64_t>(packed);
-  first = static_cast<std::uint32_t>(bits >> 32);
-  second = static_cast<std::uint32_t>(bits);
-}
-
 constexpr std::size_t kChunkHeader = 5;  // a searched chunk's pairs that touch, apart, worst overlap and its discs
 
 // A ghost: x, y, vx, vy, omega (what the force phases read); a sum: fx, fy, torque. In a world
@@ -85,7 +74,10 @@ void RankStep::post(Phase phase) {
       post_search();
       break;
     case Phase::Migration:
-      if (migrate_ && !dropped(Exchange::Migration)) send_migration();
+      if (migrate_ && !dropped(Exchange::Migration)) {
+        send_migration();
+        send_leaving_pairs();
+      }
       break;
     case Phase::Ghosts:
       if (dropped(Exchange::Ghosts)) break;
@@ -140,7 +132,10 @@ void RankStep::take(Phase phase) {
       take_search();
       break;
     case Phase::Migration:
-      if (migrate_ && !dropped(Exchange::Migration)) receive_migration();
+      if (migrate_ && !dropped(Exchange::Migration)) {
+        receive_migration();
+        receive_arriving_pairs();
+      }
       break;
     case Phase::Ghosts:
       if (dropped(Exchange::Ghosts)) break;
@@ -201,12 +196,14 @@ void RankStep::take_build() {
       unpack_build_state(access_, plan_, q, buffer_);
     }
     keepers_ = record_keepers(access_, plan_);  // before the build re-orders what they name
+    kept_pairs_ = record_kept_pairs(access_, rank_pairs(access_.neighbors, plan_.cut, rank_));
   }
   if (build_) {
     // Every copy bins and sorts as one process: what that reads (the positions, the radii) is
     // current in every copy. The search is cut by the discs in each chunk, alike in every copy.
+    // Without the whole state a copy indexes only the histories of the pairs it kept.
     Stopwatch watch(serial_.build_seconds);
-    access_.begin_list_build(pending_);
+    access_.begin_list_build(pending_, migrate_ ? rank_pairs(access_.neighbors, plan_.cut, rank_) : PairRange{});
     search_ranges_ = chunk_ranges_by_discs(pending_.bins, ranks_);
   }
 }
@@ -220,7 +217,7 @@ void RankStep::post_search() {
                                    search_ranges_[r + 1]);
   }
   if (ranks_ == 1 || searched_.empty()) return;
-  if (access_.discs.size() >= (std::size_t{1} << 31)) throw std::logic_error("too many discs to send a pair as one double");
+  if (access_.discs.size() >= kPackedPairLimit) throw std::logic_error("too many discs to send a pair as one double");
   // Two buffers to every rank: each chunk's counts and worst overlap, then its pairs.
   buffer_.clear();
   for (const ChunkPairs& c : searched_)
@@ -252,15 +249,21 @@ void RankStep::take_search() {
       else if (begin < end)
         receive_searched(q, std::span(all).subspan(begin, end - begin));
     }
-    access_.finish_list_build(pending_, all);
-    pending_ = {};
+    // Without the whole state the histories wait for the new cut: each rank carries its own chunks'.
+    access_.finish_list_build(pending_, all, migrate_ ? PairRange{0, 0} : PairRange{});
     ++serial_.builds;
   }
   // The bonds re-ordered (after a build, or new bonds): their routes too.
   const bool bonds_moved = access_.prepare_bonds();
   if (plan_.ranks == 0 || plan_.build != access_.neighbors.builds || bonds_moved) make_plan();
-  if (migrate_) migration_ = find_migration(access_, keepers_, plan_);
+  if (migrate_) {
+    Stopwatch watch(serial_.gather_seconds);
+    migration_ = find_migration(access_, keepers_, plan_);
+    carry_own_pairs();
+  }
+  pending_ = {};
   keepers_ = {};
+  kept_pairs_ = {};
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
 }
 
@@ -310,6 +313,45 @@ void RankStep::receive_migration() {
     if (q != rank_ && !values.empty()) transport_->receive(q, values);
   }
   unpack_migration(access_, migration_, plan_, rank_, received);
+}
+
+void RankStep::carry_own_pairs() {
+  const PairRange own = rank_pairs(access_.neighbors, plan_.cut, rank_);
+  PairContacts& pairs = access_.contacts.pairs;
+  carry_pair_history(pairs, pending_.pair_history, own);
+  if (pending_.rolling) carry_rolling_history(pairs, pending_.rolling_history, own);
+  rolling_pairs_ = pending_.rolling;  // alike in every copy, as what the senders recorded
+  leaving_pairs_ = pack_leaving_pairs(kept_pairs_, pending_.bins.grid, plan_.cut, rank_);
+}
+
+void RankStep::send_leaving_pairs() {
+  Stopwatch watch(serial_.gather_seconds);
+  const std::size_t per = leaving_pair_values(rolling_pairs_);
+  for (int q = 0; q < ranks_; ++q) {
+    if (q == rank_) continue;
+    const auto& values = leaving_pairs_[static_cast<std::size_t>(q)];
+    const double count = static_cast<double>(values.size() / per);
+    transport_->send(q, std::span(&count, 1));
+    if (!values.empty()) transport_->send(q, values);
+    serial_.migrated_values += 1 + values.size();
+  }
+  leaving_pairs_ = {};
+}
+
+void RankStep::receive_arriving_pairs() {
+  Stopwatch watch(serial_.gather_seconds);
+  PairContacts& pairs = access_.contacts.pairs;
+  const bool rolling = rolling_pairs_;
+  std::vector<std::vector<double>> received(static_cast<std::size_t>(ranks_));
+  for (int q = 0; q < ranks_; ++q) {
+    if (q == rank_) continue;
+    double count = 0;
+    transport_->receive(q, std::span(&count, 1));
+    auto& values = received[static_cast<std::size_t>(q)];
+    values.resize(static_cast<std::size_t>(count) * leaving_pair_values(rolling));
+    if (!values.empty()) transport_->receive(q, values);
+  }
+  unpack_arriving_pairs(pairs, rank_pairs(access_.neighbors, plan_.cut, rank_), received, rolling);
 }
 
 void RankStep::make_whole() {

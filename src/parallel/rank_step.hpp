@@ -11,7 +11,8 @@
 //                and sends its pairs to every rank; every copy joins them into the list of one
 //                process, finishes the build alike, and makes a new cut and plan (exchange_plan.hpp)
 //   Migration    after a build from positions: the motion, body state and contact histories each
-//                rank kept current, to the rank that keeps them under the new plan (migration.hpp)
+//                rank kept current, to the rank that keeps them under the new plan (migration.hpp;
+//                the pairs' histories from their old keeper alone, with a count: pair_migration.hpp)
 //   Ghosts       the motion of the discs this rank reads but another moved
 //   EvenPairs    the even chunks; their running sums to the odd chunk's rank
 //   OddPairs     the odd chunks; whole pair sums to the wall owner of a disc on a wall
@@ -38,6 +39,7 @@
 #include "parallel/exchange_plan.hpp"
 #include "world/contact_rebuild.hpp"
 #include "parallel/migration.hpp"
+#include "parallel/pair_migration.hpp"
 #include "parallel/rank_access.hpp"
 #include "parallel/rank_transport.hpp"
 
@@ -106,6 +108,10 @@ class RankStep {
   void make_plan();
   void send_migration();
   void receive_migration();
+  // The pairs' histories this rank carries itself (its own chunks), and those it sends and receives.
+  void carry_own_pairs();
+  void send_leaving_pairs();
+  void receive_arriving_pairs();
   // This rank's owned state to every other rank; theirs into this copy.
   void send_owned_state();
   void receive_owned_states();
@@ -140,6 +146,9 @@ class RankStep {
   bool migrate_ = false;  // ... from the positions alone: the state then migrates (migration.hpp)
   Migration migration_;
   PreviousKeepers keepers_;
+  KeptPairs kept_pairs_;
+  std::vector<std::vector<double>> leaving_pairs_;  // by rank
+  bool rolling_pairs_ = false;  // the pairs' histories include rolling ones
   PendingBuild pending_;
   std::vector<std::int64_t> search_ranges_;  // each rank's chunks of the search: ranks + 1 bounds
   std::vector<ChunkPairs> searched_;

@@ -13,7 +13,8 @@
 
 namespace orogen {
 
-PendingBuild begin_rebuild(const NeighborList& L, const ContactStore& store, Discs& d, Clusters& c, bool sort) {
+PendingBuild begin_rebuild(const NeighborList& L, const ContactStore& store, Discs& d, Clusters& c, bool sort,
+                           PairRange indexed) {
   PendingBuild build;
   const DiscScan scan = scan_discs(d);
   if (!scan.finite) {
@@ -22,10 +23,10 @@ PendingBuild begin_rebuild(const NeighborList& L, const ContactStore& store, Dis
   }
   // Index the old histories by stable ids before indices change.
   const std::int64_t max_id = std::max(scan.max_id, max_stored_id(store));
-  build.pair_history = index_pair_history(store.pairs, store.pairs.xi, max_id);
+  build.pair_history = index_pair_history(store.pairs, store.pairs.xi, max_id, indexed);
   build.wall_history = index_wall_history(store.walls, max_id);
   build.rolling = !store.pairs.roll.empty();  // kept only while some contact resists rolling
-  if (build.rolling) build.rolling_history = index_pair_history(store.pairs, store.pairs.roll, max_id);
+  if (build.rolling) build.rolling_history = index_pair_history(store.pairs, store.pairs.roll, max_id, indexed);
 
   build.bins = bin_discs(d, make_grid(d, 2.0 * scan.r_max + L.skin));
   build.sort = sort;
@@ -34,9 +35,11 @@ PendingBuild begin_rebuild(const NeighborList& L, const ContactStore& store, Dis
 }
 
 BuildStats finish_rebuild(PendingBuild& build, const PairSearchResult& search, NeighborList& L, ContactStore& store,
-                          Discs& d, Clusters& c, const std::vector<Wall>& walls, const ContactLaw& law, double dt) {
-  carry_pair_history(store.pairs, L, d, build.pair_history);
-  if (build.rolling) carry_rolling_history(store.pairs, build.rolling_history);
+                          Discs& d, Clusters& c, const std::vector<Wall>& walls, const ContactLaw& law, double dt,
+                          PairRange carried) {
+  set_pair_ids(store.pairs, L, d);
+  carry_pair_history(store.pairs, build.pair_history, carried);
+  if (build.rolling) carry_rolling_history(store.pairs, build.rolling_history, carried);
   prepare_damping(law, d, c, dt);  // the damping table is filled serially, read in parallel
   set_pair_damping(store.pairs, L, d, c, law, dt);
   set_chunk_hints(L, search, build.bins, build.sort);

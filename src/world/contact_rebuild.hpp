@@ -25,7 +25,10 @@ BuildStats rebuild_contacts(NeighborList& list, ContactStore& store, Discs& disc
 // apart (over ranks, docs/domain-decomposition.md): begin_rebuild indexes the old histories
 // and bins (and sorts) the discs; the caller fills list.first, second and chunk_start from the
 // bins (search_pairs, or chunks searched apart and joined); finish_rebuild does the rest.
-// rebuild_contacts is the three in turn.
+// rebuild_contacts is the three in turn. Over ranks a rank indexes only the old pairs it kept
+// current (`indexed`) and carries histories only into the new pairs it will keep (`carried`,
+// which may be empty: carry_pair_history later, once the rank's chunks are known); the
+// histories of the pairs that change keeper travel between the ranks (parallel/pair_migration).
 struct PendingBuild {
   bool finite = true;  // false: a position is not finite, nothing was changed, stop
   bool sort = false;
@@ -34,10 +37,10 @@ struct PendingBuild {
   CellBins bins;
 };
 PendingBuild begin_rebuild(const NeighborList& list, const ContactStore& store, Discs& discs, Clusters& clusters,
-                           bool sort);
+                           bool sort, PairRange indexed = {});
 BuildStats finish_rebuild(PendingBuild& build, const PairSearchResult& search, NeighborList& list, ContactStore& store,
                           Discs& discs, Clusters& clusters, const std::vector<Wall>& walls, const ContactLaw& law,
-                          double dt);
+                          double dt, PairRange carried = {});
 
 // Whether the next step must rebuild: the list is stale, or some disc (displacement `moved`,
 // from integration) plus the walls moved more than half the skin since the last build.

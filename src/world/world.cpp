@@ -86,8 +86,8 @@ bool World::sort_at_next_build() const {
   return sort_every_ > 0 && neighbors_.builds % static_cast<std::uint64_t>(sort_every_) == 0;
 }
 
-void World::begin_list_build(PendingBuild& build) {
-  build = begin_rebuild(neighbors_, contacts_, discs_, clusters_, sort_at_next_build());
+void World::begin_list_build(PendingBuild& build, PairRange indexed) {
+  build = begin_rebuild(neighbors_, contacts_, discs_, clusters_, sort_at_next_build(), indexed);
   if (!build.finite) {
     BuildStats stats;
     stats.finite = false;
@@ -95,9 +95,10 @@ void World::begin_list_build(PendingBuild& build) {
   }
 }
 
-void World::finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks) {
+void World::finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks, PairRange carried) {
   const PairSearchResult search = join_pair_chunks(neighbors_, chunks, pair_chunks(build.bins.grid).stripes_per_chunk);
-  const BuildStats stats = finish_rebuild(build, search, neighbors_, contacts_, discs_, clusters_, walls_, law_, dt_);
+  const BuildStats stats =
+      finish_rebuild(build, search, neighbors_, contacts_, discs_, clusters_, walls_, law_, dt_, carried);
   after_list_build();
   check_build(stats, *this);
 }

@@ -296,8 +296,11 @@ class World {
   void finish_step();
   // The build of rebuild_if_stale in two parts around the pair search, which a step over ranks
   // cuts between its ranks (parallel/rank_step.cpp); InstabilityError as rebuild_if_stale.
-  void begin_list_build(PendingBuild& build);
-  void finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks);  // joined as search_pairs
+  // Over ranks, the pairs whose histories the copy holds (`indexed`, the old list's) and will
+  // hold (`carried`, the new list's) are given (world/contact_rebuild.hpp).
+  void begin_list_build(PendingBuild& build, PairRange indexed = {});
+  void finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks,  // joined as search_pairs
+                         PairRange carried = {});
   bool sort_at_next_build() const;
   void after_list_build();  // the displacement since the build zeroed, the bonds re-indexed
   // Rolling resistance in this step: the store's rolling histories kept or dropped, and in a world
