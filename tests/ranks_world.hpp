@@ -90,6 +90,11 @@ inline std::vector<double> state_of(const World& w) {
   const Clusters& c = w.clusters();
   for (const auto* a : {&c.x, &c.y, &c.theta, &c.vx, &c.vy, &c.omega, &c.rot_c, &c.rot_s})
     s.insert(s.end(), a->begin(), a->end());
+  const NeighborList& L = w.neighbors();  // the list, as a whole copy gathers it
+  for (const auto* a : {&L.first, &L.second, &L.chunk_start}) for (const auto v : *a) s.push_back(v);
+  for (const auto* a : {&w.contacts().pairs.id_first, &w.contacts().pairs.id_second})
+    for (const auto v : *a) s.push_back(static_cast<double>(v));
+  s.insert(s.end(), w.contacts().pairs.gamma_n.begin(), w.contacts().pairs.gamma_n.end());
   s.insert(s.end(), w.contacts().pairs.xi.begin(), w.contacts().pairs.xi.end());
   s.insert(s.end(), w.contacts().pairs.roll.begin(), w.contacts().pairs.roll.end());  // empty without rolling resistance
   s.insert(s.end(), w.contacts().walls.xi.begin(), w.contacts().walls.xi.end());

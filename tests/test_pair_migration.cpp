@@ -50,6 +50,7 @@ TEST(PairMigration, LeavingPairsReachTheRankThatListsThem) {
   // by another rank gets that history; its own stay 0 here (its own carry gives them).
   PairContacts pairs;
   set_pair_ids(pairs, list, d);
+  pairs.xi.assign(list.size(), 0.0);
   std::size_t moved = 0;
   for (int q = 0; q < kRanks; ++q) {
     std::vector<std::vector<double>> received(kRanks);

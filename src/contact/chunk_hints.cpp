@@ -5,15 +5,15 @@ namespace orogen {
 void set_chunk_hints(NeighborList& L, const PairSearchResult& search, const CellBins& bins, bool sorted) {
   const std::size_t chunks = search.touching.size();
   L.chunk_touching.assign(search.touching.begin(), search.touching.end());
-  if (sorted) {  // discs are in cell order: chunk k's stripes hold discs from its first cell on
-    const auto nv = static_cast<std::size_t>(bins.grid.nv());
-    const auto stripes = static_cast<std::size_t>(search.stripes_per_chunk);
-    L.chunk_disc.resize(chunks + 1);
-    for (std::size_t k = 0; k < chunks; ++k) L.chunk_disc[k] = bins.cell_start[k * stripes * nv];
-    L.chunk_disc.back() = static_cast<std::uint32_t>(bins.order.size());
-  } else if (L.chunk_disc.size() != chunks + 1) {
-    L.chunk_disc.clear();  // the grid changed since the last sort: no hint until the next
-  }
+  // Chunk k's stripes hold the discs from its first cell on: the first disc index of each chunk
+  // in cell order. Sorted, the discs are in that order; unsorted, still near it (the order of
+  // the last sort, by stripes along the same axis), so the count is the best cut there too.
+  (void)sorted;
+  const auto nv = static_cast<std::size_t>(bins.grid.nv());
+  const auto stripes = static_cast<std::size_t>(search.stripes_per_chunk);
+  L.chunk_disc.resize(chunks + 1);
+  for (std::size_t k = 0; k < chunks; ++k) L.chunk_disc[k] = bins.cell_start[k * stripes * nv];
+  L.chunk_disc.back() = static_cast<std::uint32_t>(bins.order.size());
 }
 
 }  // namespace orogen

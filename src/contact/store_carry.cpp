@@ -35,7 +35,6 @@ void set_pair_ids(PairContacts& pairs, const NeighborList& L, const Discs& d) {
   const auto n = static_cast<std::ptrdiff_t>(L.size());
   pairs.id_first.resize(L.size());
   pairs.id_second.resize(L.size());
-  pairs.xi.assign(L.size(), 0.0);
 #pragma omp parallel for schedule(static) if (static_cast<std::ptrdiff_t>(d.size()) > min_parallel_items())
   for (std::ptrdiff_t p = 0; p < n; ++p) {
     pairs.id_first[p] = d.id[L.first[p]];
@@ -46,7 +45,7 @@ void set_pair_ids(PairContacts& pairs, const NeighborList& L, const Discs& d) {
 namespace {
 // history[p] for the pairs of `carried`: what `old` holds under the pair's ids.
 void carry_range(const PairContacts& pairs, std::vector<double>& history, const HistoryCarry& old, PairRange carried) {
-  const auto end = static_cast<std::ptrdiff_t>(carried.end_in(pairs.size()));
+  const auto end = static_cast<std::ptrdiff_t>(carried.end_in(history.size()));
   const auto begin = std::min(static_cast<std::ptrdiff_t>(carried.begin), end);
 #pragma omp parallel for schedule(static) if (end - begin > min_parallel_items())
   for (std::ptrdiff_t p = begin; p < end; ++p) history[p] = old.find(pairs.id_first[p], pairs.id_second[p]);
@@ -54,11 +53,12 @@ void carry_range(const PairContacts& pairs, std::vector<double>& history, const 
 }  // namespace
 
 void carry_pair_history(PairContacts& pairs, const HistoryCarry& old, PairRange carried) {
+  pairs.xi.assign(pairs.id_first.size(), 0.0);  // the list's size: its ids are set
   carry_range(pairs, pairs.xi, old, carried);
 }
 
 void carry_rolling_history(PairContacts& pairs, const HistoryCarry& old, PairRange carried) {
-  pairs.roll.assign(pairs.size(), 0.0);
+  pairs.roll.assign(pairs.id_first.size(), 0.0);
   carry_range(pairs, pairs.roll, old, carried);
 }
 

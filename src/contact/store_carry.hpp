@@ -21,10 +21,10 @@ HistoryCarry index_pair_history(const PairContacts& pairs, std::span<const doubl
                                 PairRange indexed = {});
 HistoryCarry index_wall_history(const WallContacts& walls, std::int64_t max_id);
 
-// Sets the new pairs' stable ids (from the list and discs), and their histories 0.
+// Sets the new pairs' stable ids (from the list and discs).
 void set_pair_ids(PairContacts& pairs, const NeighborList& list, const Discs& discs);
-// Carries the histories of the new pairs of `carried` (all by default), their ids set; over
-// ranks each rank carries its own chunks' (the others stay 0 in its copy).
+// Carries the histories of the new pairs of `carried` (all by default), their ids set; the
+// others' are 0 (over ranks each rank carries its own chunks').
 void carry_pair_history(PairContacts& pairs, const HistoryCarry& old, PairRange carried = {});
 // The same for the rolling histories (sized, and 0 outside `carried`).
 void carry_rolling_history(PairContacts& pairs, const HistoryCarry& old, PairRange carried = {});

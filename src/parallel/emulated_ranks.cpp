@@ -34,7 +34,11 @@ World EmulatedRanks::gathered() {
     buffer.clear();
     pack_owned_state(steps_[static_cast<std::size_t>(r)]->access(), plan, r, buffer);
     unpack_owned_state(into, plan, r, buffer);
+    buffer.clear();  // its chunks of the list (each copy holds only its own after a build)
+    pack_list_pairs(steps_[static_cast<std::size_t>(r)]->access(), plan, r, buffer);
+    unpack_list_pairs(into, plan, r, buffer);
   }
+  complete_gathered_list(into);
   return whole;
 }
 

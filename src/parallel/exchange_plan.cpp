@@ -7,10 +7,8 @@
 #include <utility>
 
 namespace orogen {
-namespace {
 
-// The rank of each disc's even and odd chunk.
-void chunk_ranks(const NeighborList& L, const ThreadSplit& cut, std::size_t discs, ExchangePlan& plan) {
+ChunkRanks list_chunk_ranks(const NeighborList& L, const ThreadSplit& cut, std::size_t discs) {
   const std::size_t chunks = L.chunk_start.empty() ? 0 : L.chunk_start.size() - 1;
   const std::vector<std::int32_t> chunk_rank = rank_of_ranges(cut.chunk, chunks);
   std::vector<std::int64_t> chunk_of[2] = {std::vector<std::int64_t>(discs, -1), std::vector<std::int64_t>(discs, -1)};
@@ -23,15 +21,13 @@ void chunk_ranks(const NeighborList& L, const ThreadSplit& cut, std::size_t disc
         seen[i] = static_cast<std::int64_t>(k);
       }
   }
-  plan.even_rank.assign(discs, kNoRank);
-  plan.odd_rank.assign(discs, kNoRank);
+  ChunkRanks out{std::vector<std::int32_t>(discs, kNoRank), std::vector<std::int32_t>(discs, kNoRank)};
   for (std::size_t i = 0; i < discs; ++i) {
-    if (chunk_of[0][i] >= 0) plan.even_rank[i] = chunk_rank[static_cast<std::size_t>(chunk_of[0][i])];
-    if (chunk_of[1][i] >= 0) plan.odd_rank[i] = chunk_rank[static_cast<std::size_t>(chunk_of[1][i])];
+    if (chunk_of[0][i] >= 0) out.even[i] = chunk_rank[static_cast<std::size_t>(chunk_of[0][i])];
+    if (chunk_of[1][i] >= 0) out.odd[i] = chunk_rank[static_cast<std::size_t>(chunk_of[1][i])];
   }
+  return out;
 }
-
-}  // namespace
 
 std::vector<std::int32_t> rank_of_ranges(const std::vector<std::ptrdiff_t>& bounds, std::size_t items) {
   std::vector<std::int32_t> rank(items, kNoRank);
@@ -48,13 +44,20 @@ std::size_t Routes::total() const {
 
 ExchangePlan make_exchange_plan(const NeighborList& L, const WallContacts& walls, const Discs& d, const Clusters& c,
                                 const ThreadSplit& cut, const Bonds& bonds, std::size_t acting_bonds) {
+  return make_exchange_plan(list_chunk_ranks(L, cut, d.size()), L.builds, walls, d, c, cut, bonds, acting_bonds);
+}
+
+ExchangePlan make_exchange_plan(ChunkRanks chunk_ranks, std::uint64_t build, const WallContacts& walls,
+                                const Discs& d, const Clusters& c, const ThreadSplit& cut, const Bonds& bonds,
+                                std::size_t acting_bonds) {
   const int ranks = cut.threads();
   const std::size_t n = d.size();
   ExchangePlan plan;
   plan.ranks = ranks;
   plan.cut = cut;
-  plan.build = L.builds;
-  chunk_ranks(L, cut, n, plan);
+  plan.build = build;
+  plan.even_rank = std::move(chunk_ranks.even);
+  plan.odd_rank = std::move(chunk_ranks.odd);
   plan.wall_rank = rank_of_ranges(cut.disc, n);
   const std::vector<std::int32_t> body_rank = rank_of_ranges(cut.body, c.size());
   plan.step_rank.resize(n);

@@ -56,10 +56,23 @@ struct ExchangePlan {
 // ThreadSplit's chunk, disc or body bounds, one range per rank.
 std::vector<std::int32_t> rank_of_ranges(const std::vector<std::ptrdiff_t>& bounds, std::size_t items);
 
-// The plan of a step cut by `cut` (one share per rank). The acting bonds [0, acting_bonds) are
-// stepped by the ranks that integrate either disc, after the whole sums arrive (so a bond's
-// discs are read by both: ghosts). std::logic_error if some disc lies in two chunks of one parity
-// (the list's chunks forbid it: the sums' order would then depend on the cut).
+// By disc: the rank of the even and of the odd chunk whose pairs name it (kNoRank: none).
+struct ChunkRanks {
+  std::vector<std::int32_t> even, odd;
+};
+// From the whole list; std::logic_error if some disc lies in two chunks of one parity (the
+// list's chunks forbid it: the sums' order would then depend on the cut).
+ChunkRanks list_chunk_ranks(const NeighborList& list, const ThreadSplit& cut, std::size_t discs);
+
+// The plan of a step cut by `cut` (one share per rank), for the list of build `build` whose
+// chunks name the discs as `chunk_ranks` says (from the whole list, or a superset of it from
+// the stripes: stripe_ranks.hpp). The acting bonds [0, acting_bonds) are stepped by the ranks
+// that integrate either disc, after the whole sums arrive (so a bond's discs are read by both:
+// ghosts).
+ExchangePlan make_exchange_plan(ChunkRanks chunk_ranks, std::uint64_t build, const WallContacts& walls,
+                                const Discs& discs, const Clusters& clusters, const ThreadSplit& cut, const Bonds& bonds,
+                                std::size_t acting_bonds);
+// The same from the whole list.
 ExchangePlan make_exchange_plan(const NeighborList& list, const WallContacts& walls, const Discs& discs,
                                 const Clusters& clusters, const ThreadSplit& cut, const Bonds& bonds,
                                 std::size_t acting_bonds);

@@ -28,6 +28,9 @@ std::optional<World> MpiRank::gathered() {
     if (plan.ranks == 0) return std::nullopt;  // not stepped yet: rank 0's copy is the world given
     pack_owned_state(step_->access(), plan, rank(), buffer);
     transport_.send(0, buffer);
+    buffer.clear();  // its chunks of the list (each copy holds only its own after a build)
+    pack_list_pairs(step_->access(), plan, rank(), buffer);
+    transport_.send(0, buffer);
     transport_.flush();
     return std::nullopt;
   }
@@ -38,7 +41,11 @@ std::optional<World> MpiRank::gathered() {
     buffer.resize(owned_state_size(into, plan, r));
     transport_.receive(r, buffer);
     unpack_owned_state(into, plan, r, buffer);
+    buffer.resize(list_pairs_size(into, plan, r));
+    transport_.receive(r, buffer);
+    unpack_list_pairs(into, plan, r, buffer);
   }
+  complete_gathered_list(into);
   return whole;
 }
 

@@ -20,7 +20,7 @@ std::string MpiStepping::traffic_per_step(std::uint64_t steps) const {
       "steps; of the bytes, {:.3g} kB a step in {} gathers ({} of the positions alone; {:.3g} MB each on average) "
       "and {:.3g} kB a step migrated after builds; {:.3g} us a step in the gathers and migrations and {:.3g} us in {} "
       "list builds (of them {:.3g} us in its share of the pair search, the rest binning and sorting the discs whole "
-      "and joining the ranks' pairs; its pairs sent, {:.3g} kB a step)",
+      "and finishing its chunks of the list; the pairs it searched for another rank's chunks, {:.3g} kB a step)",
       rank(), ranks(), static_cast<double>(t.messages) / n, 8e-3 * static_cast<double>(t.values) / n,
       1e6 * t.seconds_waiting / n, steps, 8e-3 * static_cast<double>(serial.gathered_values) / n, serial.gathers,
       serial.position_gathers, 8e-6 * static_cast<double>(serial.gathered_values) / gathers,

@@ -3,6 +3,11 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "contact/contact_damping.hpp"
+#include "contact/store_carry.hpp"
+#include "parallel/packed_pair.hpp"
+#include "parallel/pair_migration.hpp"
+
 namespace orogen {
 namespace {
 
@@ -134,5 +139,33 @@ void unpack_build_state(RankAccess& a, const ExchangePlan& plan, int owner, std:
 }
 
 std::size_t build_state_size(RankAccess& a, const ExchangePlan& plan, int owner) { return count(a, plan, owner, kBuild); }
+
+void pack_list_pairs(RankAccess& a, const ExchangePlan& plan, int owner, std::vector<double>& out) {
+  const NeighborList& L = a.neighbors;
+  const PairRange own = rank_pairs(L, plan.cut, owner);
+  for (std::size_t p = own.begin; p < own.end; ++p) out.push_back(pack_pair(L.first[p], L.second[p]));
+}
+
+void unpack_list_pairs(RankAccess& a, const ExchangePlan& plan, int owner, std::span<const double> in) {
+  NeighborList& L = a.list();
+  const PairRange theirs = rank_pairs(L, plan.cut, owner);
+  if (in.size() != theirs.end - theirs.begin) throw std::logic_error("a rank's pairs of another number than its chunks'");
+  std::size_t p = theirs.begin;
+  for (const double packed : in) {
+    unpack_pair(packed, L.first[p], L.second[p]);
+    ++p;
+  }
+}
+
+std::size_t list_pairs_size(RankAccess& a, const ExchangePlan& plan, int owner) {
+  const PairRange theirs = rank_pairs(a.neighbors, plan.cut, owner);
+  return theirs.end - theirs.begin;
+}
+
+void complete_gathered_list(RankAccess& a) {
+  set_pair_ids(a.contacts.pairs, a.neighbors, a.discs);
+  prepare_damping(a.law, a.discs, a.clusters, a.dt);
+  set_pair_damping(a.contacts.pairs, a.neighbors, a.discs, a.clusters, a.law, a.dt);
+}
 
 }  // namespace orogen

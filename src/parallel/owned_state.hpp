@@ -30,4 +30,13 @@ void pack_build_state(RankAccess& world, const ExchangePlan& plan, int owner, st
 void unpack_build_state(RankAccess& world, const ExchangePlan& plan, int owner, std::span<const double> in);
 std::size_t build_state_size(RankAccess& world, const ExchangePlan& plan, int owner);
 
+// The pairs of rank `owner`'s chunks of the list (disc indices, one double a pair): after a
+// build over ranks each copy holds only its own (parallel/rank_step.cpp), and a whole copy
+// gathers the others'. Once every rank's are in, complete_gathered_list sets the ids and
+// dashpots of the pairs that came (as their keepers set them at the build).
+void pack_list_pairs(RankAccess& world, const ExchangePlan& plan, int owner, std::vector<double>& out);
+void unpack_list_pairs(RankAccess& world, const ExchangePlan& plan, int owner, std::span<const double> in);
+std::size_t list_pairs_size(RankAccess& world, const ExchangePlan& plan, int owner);
+void complete_gathered_list(RankAccess& world);
+
 }  // namespace orogen

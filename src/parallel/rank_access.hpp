@@ -29,9 +29,11 @@ struct RankAccess {
 
   // A list build in two parts around the pair search, which the ranks cut between them.
   void begin_list_build(PendingBuild& build, PairRange indexed) { world.begin_list_build(build, indexed); }
-  void finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks, PairRange carried) {
-    world.finish_list_build(build, chunks, carried);
-  }
+  void join_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks) { world.join_list_build(build, chunks); }
+  void finish_list_build(PendingBuild& build, PairRange carried) { world.finish_list_build(build, carried); }
+  // The list, for a rank to write the pairs of its chunks that others searched, or the whole
+  // list gathered (rank_step.cpp).
+  NeighborList& list() { return world.neighbors_; }
   // What the contact stages read besides the discs, as World::step_stages prepares it: in a
   // world of materials each disc's friction from its slip (current for the discs this rank reads:
   // they came with the ghosts) and that slip for weakening walls; the rolling histories.

@@ -8,6 +8,7 @@
 #include "boundary/wall_forces.hpp"
 #include "contact/pair_forces.hpp"
 #include "contact/store_carry.hpp"
+#include "parallel/stripe_ranks.hpp"
 #include "integrate/integrator.hpp"
 #include "parallel/owned_state.hpp"
 #include "parallel/packed_pair.hpp"
@@ -73,6 +74,9 @@ void RankStep::post(Phase phase) {
     case Phase::Search:
       post_search();
       break;
+    case Phase::Lists:
+      post_lists();
+      break;
     case Phase::Migration:
       if (migrate_ && !dropped(Exchange::Migration)) {
         send_migration();
@@ -130,6 +134,9 @@ void RankStep::take(Phase phase) {
       break;
     case Phase::Search:
       take_search();
+      break;
+    case Phase::Lists:
+      take_lists();
       break;
     case Phase::Migration:
       if (migrate_ && !dropped(Exchange::Migration)) {
@@ -215,10 +222,11 @@ void RankStep::post_search() {
     const auto r = static_cast<std::size_t>(rank_);
     searched_ = search_pair_chunks(pending_.bins, access_.discs, access_.neighbors.skin, search_ranges_[r],
                                    search_ranges_[r + 1]);
+    for (const ChunkPairs& c : searched_) serial_.searched_pairs += c.first.size() + c.apart_first.size();
   }
   if (ranks_ == 1 || searched_.empty()) return;
-  if (access_.discs.size() >= kPackedPairLimit) throw std::logic_error("too many discs to send a pair as one double");
-  // Two buffers to every rank: each chunk's counts and worst overlap, then its pairs.
+  // Every rank learns each chunk's counts and worst overlap; the pairs go only where the cut
+  // after the search puts their chunk (the Lists phase).
   buffer_.clear();
   for (const ChunkPairs& c : searched_)
     buffer_.insert(buffer_.end(), {static_cast<double>(c.first.size()), static_cast<double>(c.apart_first.size()),
@@ -226,31 +234,87 @@ void RankStep::post_search() {
                                    static_cast<double>(c.stats.worst_b)});
   for (int q = 0; q < ranks_; ++q)
     if (q != rank_) transport_->send(q, buffer_);
-  buffer_.clear();
-  for (const ChunkPairs& c : searched_) {
-    for (std::size_t p = 0; p < c.first.size(); ++p) buffer_.push_back(pack_pair(c.first[p], c.second[p]));
-    for (std::size_t p = 0; p < c.apart_first.size(); ++p)
-      buffer_.push_back(pack_pair(c.apart_first[p], c.apart_second[p]));
-  }
-  for (int q = 0; q < ranks_; ++q)
-    if (q != rank_) transport_->send(q, buffer_);
-  serial_.list_values += buffer_.size() * static_cast<std::size_t>(ranks_ - 1);
 }
 
 void RankStep::take_search() {
+  if (!build_) return;
+  Stopwatch watch(serial_.build_seconds);
+  // The list of one process in its shape: this rank's chunks searched, the others' pairs
+  // placeholders (disc 0 with itself, a pair no search lists) until the Lists phase brings the
+  // ones this rank keeps. The cut follows from the shape alone.
+  std::vector<ChunkPairs> all(static_cast<std::size_t>(search_ranges_.back()));
+  for (int q = 0; q < ranks_; ++q) {
+    const auto begin = static_cast<std::size_t>(search_ranges_[static_cast<std::size_t>(q)]);
+    const auto end = static_cast<std::size_t>(search_ranges_[static_cast<std::size_t>(q) + 1]);
+    if (q == rank_)
+      std::move(searched_.begin(), searched_.end(), all.begin() + static_cast<std::ptrdiff_t>(begin));
+    else if (begin < end)
+      receive_search_counts(q, std::span(all).subspan(begin, end - begin));
+  }
+  searched_ = {};
+  access_.join_list_build(pending_, all);
+  build_cut_ = cut_(access_.neighbors, access_.discs, access_.clusters, ranks_);
+  if (build_cut_.threads() != ranks_) throw std::logic_error("a rank cut with another number of shares than ranks");
+}
+
+void RankStep::receive_search_counts(int q, std::span<ChunkPairs> chunks) {
+  buffer_.resize(kChunkHeader * chunks.size());
+  transport_->receive(q, buffer_);
+  for (std::size_t k = 0; k < chunks.size(); ++k) {
+    const double* h = buffer_.data() + kChunkHeader * k;
+    ChunkPairs& c = chunks[k];
+    c.first.assign(static_cast<std::size_t>(h[0]), 0);
+    c.second.assign(c.first.size(), 0);
+    c.apart_first.assign(static_cast<std::size_t>(h[1]), 0);
+    c.apart_second.assign(c.apart_first.size(), 0);
+    c.stats.max_overlap_ratio = h[2];
+    c.stats.worst_a = static_cast<std::uint32_t>(h[3]);
+    c.stats.worst_b = static_cast<std::uint32_t>(h[4]);
+  }
+}
+
+// The chunks of [begin, end) that rank `q` keeps under the cut made after the search.
+std::pair<std::size_t, std::size_t> RankStep::kept_part(int q, std::int64_t begin, std::int64_t end) const {
+  const auto r = static_cast<std::size_t>(q);
+  const auto lo = std::max<std::int64_t>(begin, build_cut_.chunk[r]);
+  const auto hi = std::min<std::int64_t>(end, build_cut_.chunk[r + 1]);
+  return {static_cast<std::size_t>(lo), static_cast<std::size_t>(std::max(lo, hi))};
+}
+
+void RankStep::post_lists() {
+  if (!build_ || ranks_ == 1) return;
+  if (access_.discs.size() >= kPackedPairLimit) throw std::logic_error("too many discs to send a pair as one double");
+  const NeighborList& L = access_.neighbors;
+  const auto r = static_cast<std::size_t>(rank_);
+  for (int q = 0; q < ranks_; ++q) {
+    if (q == rank_) continue;
+    const auto [k0, k1] = kept_part(q, search_ranges_[r], search_ranges_[r + 1]);
+    if (k0 == k1 || L.chunk_start[k0] == L.chunk_start[k1]) continue;
+    buffer_.clear();
+    for (std::size_t p = L.chunk_start[k0]; p < L.chunk_start[k1]; ++p) buffer_.push_back(pack_pair(L.first[p], L.second[p]));
+    transport_->send(q, buffer_);
+    serial_.list_values += buffer_.size();
+  }
+}
+
+void RankStep::take_lists() {
   if (build_) {
     Stopwatch watch(serial_.build_seconds);
-    std::vector<ChunkPairs> all(static_cast<std::size_t>(search_ranges_.back()));
+    NeighborList& L = access_.list();
     for (int q = 0; q < ranks_; ++q) {
-      const auto begin = static_cast<std::size_t>(search_ranges_[static_cast<std::size_t>(q)]);
-      const auto end = static_cast<std::size_t>(search_ranges_[static_cast<std::size_t>(q) + 1]);
-      if (q == rank_)
-        std::move(searched_.begin(), searched_.end(), all.begin() + static_cast<std::ptrdiff_t>(begin));
-      else if (begin < end)
-        receive_searched(q, std::span(all).subspan(begin, end - begin));
+      if (q == rank_) continue;
+      const auto [k0, k1] = kept_part(rank_, search_ranges_[static_cast<std::size_t>(q)],
+                                      search_ranges_[static_cast<std::size_t>(q) + 1]);
+      if (k0 == k1 || L.chunk_start[k0] == L.chunk_start[k1]) continue;
+      buffer_.resize(L.chunk_start[k1] - L.chunk_start[k0]);
+      transport_->receive(q, buffer_);
+      std::size_t p = L.chunk_start[k0];
+      for (const double packed : buffer_) { unpack_pair(packed, L.first[p], L.second[p]); ++p; }
     }
-    // Without the whole state the histories wait for the new cut: each rank carries its own chunks'.
-    access_.finish_list_build(pending_, all, migrate_ ? PairRange{0, 0} : PairRange{});
+    // The histories: the old ones this rank kept (all, in a copy made whole by a stage) into
+    // its chunks of the new list.
+    access_.finish_list_build(pending_, rank_pairs(L, build_cut_, rank_));
+    list_whole_ = ranks_ == 1;
     ++serial_.builds;
   }
   // The bonds re-ordered (after a build, or new bonds): their routes too.
@@ -259,37 +323,13 @@ void RankStep::take_search() {
   if (migrate_) {
     Stopwatch watch(serial_.gather_seconds);
     migration_ = find_migration(access_, keepers_, plan_);
-    carry_own_pairs();
+    leaving_pairs_ = pack_leaving_pairs(kept_pairs_, pending_.bins.grid, plan_.cut, rank_);
+    rolling_pairs_ = pending_.rolling;  // alike in every copy, as what the senders recorded
   }
   pending_ = {};
   keepers_ = {};
   kept_pairs_ = {};
   access_.forces.resize(access_.discs.size());  // zero between steps (take_displacements)
-}
-
-void RankStep::receive_searched(int q, std::span<ChunkPairs> chunks) {
-  buffer_.resize(kChunkHeader * chunks.size());
-  transport_->receive(q, buffer_);
-  std::size_t pairs = 0;
-  for (std::size_t k = 0; k < chunks.size(); ++k) {
-    const double* h = buffer_.data() + kChunkHeader * k;
-    ChunkPairs& c = chunks[k];
-    c.first.resize(static_cast<std::size_t>(h[0]));
-    c.second.resize(c.first.size());
-    c.apart_first.resize(static_cast<std::size_t>(h[1]));
-    c.apart_second.resize(c.apart_first.size());
-    c.stats.max_overlap_ratio = h[2];
-    c.stats.worst_a = static_cast<std::uint32_t>(h[3]);
-    c.stats.worst_b = static_cast<std::uint32_t>(h[4]);
-    pairs += c.first.size() + c.apart_first.size();
-  }
-  buffer_.resize(pairs);
-  transport_->receive(q, buffer_);
-  const double* v = buffer_.data();
-  for (ChunkPairs& c : chunks) {
-    for (std::size_t p = 0; p < c.first.size(); ++p) unpack_pair(*v++, c.first[p], c.second[p]);
-    for (std::size_t p = 0; p < c.apart_first.size(); ++p) unpack_pair(*v++, c.apart_first[p], c.apart_second[p]);
-  }
 }
 
 void RankStep::send_migration() {
@@ -313,15 +353,6 @@ void RankStep::receive_migration() {
     if (q != rank_ && !values.empty()) transport_->receive(q, values);
   }
   unpack_migration(access_, migration_, plan_, rank_, received);
-}
-
-void RankStep::carry_own_pairs() {
-  const PairRange own = rank_pairs(access_.neighbors, plan_.cut, rank_);
-  PairContacts& pairs = access_.contacts.pairs;
-  carry_pair_history(pairs, pending_.pair_history, own);
-  if (pending_.rolling) carry_rolling_history(pairs, pending_.rolling_history, own);
-  rolling_pairs_ = pending_.rolling;  // alike in every copy, as what the senders recorded
-  leaving_pairs_ = pack_leaving_pairs(kept_pairs_, pending_.bins.grid, plan_.cut, rank_);
 }
 
 void RankStep::send_leaving_pairs() {
@@ -358,8 +389,22 @@ void RankStep::make_whole() {
   if (whole_) return;
   Stopwatch watch(serial_.gather_seconds);
   send_owned_state();
+  if (!list_whole_) send_list_pairs();
   receive_owned_states();
+  if (!list_whole_) receive_list_pairs();
+  list_whole_ = true;
   whole_ = true;
+}
+
+void RankStep::send_list_pairs() {
+  buffer_.clear();
+  pack_list_pairs(access_, plan_, rank_, buffer_);
+  send_to_others();
+}
+
+void RankStep::receive_list_pairs() {
+  receive_from_others(list_pairs_size, unpack_list_pairs);
+  complete_gathered_list(access_);
 }
 
 void RankStep::gather_positions() {
@@ -368,12 +413,7 @@ void RankStep::gather_positions() {
   buffer_.clear();
   pack_owned_positions(access_, plan_, rank_, buffer_);
   send_gathered(true);
-  for (int q = 0; q < ranks_; ++q) {
-    if (q == rank_) continue;
-    buffer_.resize(owned_positions_size(access_, plan_, q));
-    transport_->receive(q, buffer_);
-    unpack_owned_positions(access_, plan_, q, buffer_);
-  }
+  receive_from_others(owned_positions_size, unpack_owned_positions);
 }
 
 void RankStep::send_owned_state() {
@@ -383,27 +423,48 @@ void RankStep::send_owned_state() {
 }
 
 void RankStep::send_gathered(bool positions) {
-  for (int q = 0; q < ranks_; ++q)
-    if (q != rank_) transport_->send(q, buffer_);
+  send_to_others();
   ++serial_.gathers;
   if (positions) ++serial_.position_gathers;
+}
+
+void RankStep::send_to_others() {
+  for (int q = 0; q < ranks_; ++q)
+    if (q != rank_) transport_->send(q, buffer_);
   serial_.gathered_values += buffer_.size() * static_cast<std::size_t>(ranks_ - 1);
 }
 
-void RankStep::receive_owned_states() {
+void RankStep::receive_from_others(SizeOf size, Unpack unpack) {
   for (int q = 0; q < ranks_; ++q) {
     if (q == rank_) continue;
-    buffer_.resize(owned_state_size(access_, plan_, q));
+    buffer_.resize(size(access_, plan_, q));
     transport_->receive(q, buffer_);
-    unpack_owned_state(access_, plan_, q, buffer_);
+    unpack(access_, plan_, q, buffer_);
   }
 }
 
+void RankStep::receive_owned_states() { receive_from_others(owned_state_size, unpack_owned_state); }
+
 void RankStep::make_plan() {
-  const ThreadSplit cut = cut_(access_.neighbors, access_.discs, access_.clusters, ranks_);
-  if (cut.threads() != ranks_) throw std::logic_error("a rank cut with another number of shares than ranks");
-  plan_ = make_exchange_plan(access_.neighbors, access_.contacts.walls, access_.discs, access_.clusters, cut,
-                             access_.bonds, access_.bonds.id_a.empty() ? 0 : access_.bond_scratch.acting);
+  // After a build: its cut, and the chunks that can name each disc from its stripes (no rank
+  // holds the whole list). A copy's first plan (whole: fresh, or resumed): from its list. Bonds
+  // made between builds: the routes of the last build's cut and chunks.
+  ThreadSplit cut;
+  ChunkRanks chunk_ranks;
+  if (build_) {
+    cut = build_cut_;
+    chunk_ranks = stripe_chunk_ranks(pending_.bins.grid, access_.discs, cut);
+  } else if (plan_.ranks == 0) {
+    cut = cut_(access_.neighbors, access_.discs, access_.clusters, ranks_);
+    if (cut.threads() != ranks_) throw std::logic_error("a rank cut with another number of shares than ranks");
+    chunk_ranks = list_chunk_ranks(access_.neighbors, cut, access_.discs.size());
+  } else {
+    cut = plan_.cut;
+    chunk_ranks = {plan_.even_rank, plan_.odd_rank};
+  }
+  plan_ = make_exchange_plan(std::move(chunk_ranks), access_.neighbors.builds, access_.contacts.walls, access_.discs,
+                             access_.clusters, cut, access_.bonds,
+                             access_.bonds.id_a.empty() ? 0 : access_.bond_scratch.acting);
 }
 
 void RankStep::send_sums(const Routes& routes) {

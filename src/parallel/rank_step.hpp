@@ -8,8 +8,12 @@
 //                copy was whole already, a stage gathered it, no exchange); each copy bins and
 //                sorts the discs as one process
 //   Search       each rank searches its range of the list's chunks (cut by the discs in them)
-//                and sends its pairs to every rank; every copy joins them into the list of one
-//                process, finishes the build alike, and makes a new cut and plan (exchange_plan.hpp)
+//                and sends every rank each chunk's counts; every copy makes the list's shape
+//                (the other ranks' pairs placeholders) and from it the new cut
+//   Lists        the pairs a rank searched in chunks the cut gives another rank, to that rank;
+//                each copy then holds its own chunks' pairs (make_whole gathers the rest),
+//                finishes the build over them (histories carried into its own chunks alone) and
+//                makes the plan from the stripes (stripe_ranks.hpp, exchange_plan.hpp)
 //   Migration    after a build from positions: the motion, body state and contact histories each
 //                rank kept current, to the rank that keeps them under the new plan (migration.hpp;
 //                the pairs' histories from their old keeper alone, with a count: pair_migration.hpp)
@@ -45,10 +49,10 @@
 
 namespace orogen {
 
-enum class Phase : std::uint8_t { Build, Search, Migration, Ghosts, EvenPairs, OddPairs, Walls, Integration };
-inline constexpr std::array<Phase, 8> kStepPhases = {Phase::Build,     Phase::Search,   Phase::Migration,
-                                                     Phase::Ghosts,    Phase::EvenPairs, Phase::OddPairs,
-                                                     Phase::Walls,     Phase::Integration};
+enum class Phase : std::uint8_t { Build, Search, Lists, Migration, Ghosts, EvenPairs, OddPairs, Walls, Integration };
+inline constexpr std::array<Phase, 9> kStepPhases = {Phase::Build,     Phase::Search,   Phase::Lists,
+                                                     Phase::Migration, Phase::Ghosts,   Phase::EvenPairs,
+                                                     Phase::OddPairs,  Phase::Walls,    Phase::Integration};
 
 // std::invalid_argument naming what a step over ranks does not run yet (hooks inside the step
 // other than a pin). Check the world given, not a copy: a copy drops its hooks.
@@ -86,7 +90,8 @@ class RankStep {
   struct SerialWork {
     std::uint64_t gathers = 0, gathered_values = 0, builds = 0, migrated_values = 0;
     std::uint64_t position_gathers = 0;  // of them, gathers of the positions (and bonds) alone
-    std::uint64_t list_values = 0;
+    std::uint64_t list_values = 0;  // pairs this rank searched and another keeps (one value each)
+    std::uint64_t searched_pairs = 0;  // pairs found in this rank's share of the searches
     double gather_seconds = 0, build_seconds = 0;
     double search_seconds = 0;  // of build_seconds, in this rank's share of the pair search
   };
@@ -94,6 +99,7 @@ class RankStep {
 
   const ExchangePlan& plan() const { return plan_; }
   World& world() { return access_.world; }
+  const World& world() const { return access_.world; }
   RankAccess& access() { return access_; }
   void drop_for_testing(Exchange e) { dropped_[static_cast<std::size_t>(e)] = true; }
 
@@ -101,22 +107,36 @@ class RankStep {
   bool dropped(Exchange e) const { return dropped_[static_cast<std::size_t>(e)]; }
   void post_build();
   void take_build();
-  // This rank's chunks of the list searched and sent; every rank's joined, the build finished.
+  // This rank's chunks of the list searched, their counts sent; every rank's counts joined into
+  // the list's shape, the new cut made from it.
   void post_search();
   void take_search();
-  void receive_searched(int from, std::span<ChunkPairs> chunks);  // as post_search sent them
+  void receive_search_counts(int from, std::span<ChunkPairs> chunks);  // as post_search sent them
+  // The pairs this rank searched and another keeps under the new cut, sent; those it keeps and
+  // another searched, received; the build finished, the plan made.
+  void post_lists();
+  void take_lists();
+  std::pair<std::size_t, std::size_t> kept_part(int rank, std::int64_t begin, std::int64_t end) const;
   void make_plan();
   void send_migration();
   void receive_migration();
-  // The pairs' histories this rank carries itself (its own chunks), and those it sends and receives.
-  void carry_own_pairs();
+  // The pairs' histories that change keeper, sent and received.
   void send_leaving_pairs();
   void receive_arriving_pairs();
   // This rank's owned state to every other rank; theirs into this copy.
   void send_owned_state();
   void receive_owned_states();
+  // This rank's chunks of the list to every other rank; theirs into this copy (make_whole).
+  void send_list_pairs();
+  void receive_list_pairs();
   // buffer_ to every other rank, counted as a gather (of the positions, or of the whole state).
   void send_gathered(bool positions);
+  // buffer_ to every other rank, its values counted as gathered; from every other rank, a
+  // buffer of `size` values given to `unpack` (the walks of owned_state.hpp).
+  void send_to_others();
+  using SizeOf = std::size_t (*)(RankAccess&, const ExchangePlan&, int);
+  using Unpack = void (*)(RankAccess&, const ExchangePlan&, int, std::span<const double>);
+  void receive_from_others(SizeOf size, Unpack unpack);
   // The discs' force sums along `routes`, out of this rank, or into it (set, not added).
   void send_sums(const Routes& routes);
   void receive_sums(const Routes& routes);
@@ -142,6 +162,7 @@ class RankStep {
   int rank_, ranks_;
   ExchangePlan plan_;
   bool whole_ = true;  // this copy holds every rank's current state (a fresh copy, gathered by a stage, or built from it)
+  bool list_whole_ = true;  // its list holds every chunk's pairs (after a build over ranks: only this rank's)
   bool build_ = false;  // this step rebuilds the list
   bool migrate_ = false;  // ... from the positions alone: the state then migrates (migration.hpp)
   Migration migration_;
@@ -152,6 +173,7 @@ class RankStep {
   PendingBuild pending_;
   std::vector<std::int64_t> search_ranges_;  // each rank's chunks of the search: ranks + 1 bounds
   std::vector<ChunkPairs> searched_;
+  ThreadSplit build_cut_;  // the cut made at this step's build
   double max2_ = 0;
   double not_finite_ = 0;
   ThreadSplit threads_cut_;

@@ -34,15 +34,18 @@ PendingBuild begin_rebuild(const NeighborList& L, const ContactStore& store, Dis
   return build;
 }
 
-BuildStats finish_rebuild(PendingBuild& build, const PairSearchResult& search, NeighborList& L, ContactStore& store,
-                          Discs& d, Clusters& c, const std::vector<Wall>& walls, const ContactLaw& law, double dt,
-                          PairRange carried) {
+void take_found_pairs(PendingBuild& build, const PairSearchResult& search, NeighborList& L) {
+  build.search = search;
+  set_chunk_hints(L, search, build.bins, build.sort);
+}
+
+BuildStats finish_rebuild(PendingBuild& build, NeighborList& L, ContactStore& store, Discs& d, Clusters& c,
+                          const std::vector<Wall>& walls, const ContactLaw& law, double dt, PairRange carried) {
   set_pair_ids(store.pairs, L, d);
   carry_pair_history(store.pairs, build.pair_history, carried);
   if (build.rolling) carry_rolling_history(store.pairs, build.rolling_history, carried);
   prepare_damping(law, d, c, dt);  // the damping table is filled serially, read in parallel
   set_pair_damping(store.pairs, L, d, c, law, dt);
-  set_chunk_hints(L, search, build.bins, build.sort);
 
   search_wall_contacts(store.walls, d, walls, L.skin);
   carry_wall_history(store.walls, build.wall_history);
@@ -52,7 +55,7 @@ BuildStats finish_rebuild(PendingBuild& build, const PairSearchResult& search, N
   record_reference_positions(L, d, walls);
   ++L.builds;
   L.valid = true;
-  return search.stats;
+  return build.search.stats;
 }
 
 BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clusters& c,
@@ -63,8 +66,8 @@ BuildStats rebuild_contacts(NeighborList& L, ContactStore& store, Discs& d, Clus
     stats.finite = false;
     return stats;
   }
-  const PairSearchResult search = search_pairs(L, build.bins, d);
-  return finish_rebuild(build, search, L, store, d, c, walls, law, dt);
+  take_found_pairs(build, search_pairs(L, build.bins, d), L);
+  return finish_rebuild(build, L, store, d, c, walls, law, dt);
 }
 
 bool contacts_stale(const NeighborList& L, const Discs& d, const std::vector<Wall>& walls, double moved) {

@@ -95,10 +95,13 @@ void World::begin_list_build(PendingBuild& build, PairRange indexed) {
   }
 }
 
-void World::finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks, PairRange carried) {
-  const PairSearchResult search = join_pair_chunks(neighbors_, chunks, pair_chunks(build.bins.grid).stripes_per_chunk);
-  const BuildStats stats =
-      finish_rebuild(build, search, neighbors_, contacts_, discs_, clusters_, walls_, law_, dt_, carried);
+void World::join_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks) {
+  take_found_pairs(build, join_pair_chunks(neighbors_, chunks, pair_chunks(build.bins.grid).stripes_per_chunk),
+                   neighbors_);
+}
+
+void World::finish_list_build(PendingBuild& build, PairRange carried) {
+  const BuildStats stats = finish_rebuild(build, neighbors_, contacts_, discs_, clusters_, walls_, law_, dt_, carried);
   after_list_build();
   check_build(stats, *this);
 }

@@ -299,8 +299,8 @@ class World {
   // Over ranks, the pairs whose histories the copy holds (`indexed`, the old list's) and will
   // hold (`carried`, the new list's) are given (world/contact_rebuild.hpp).
   void begin_list_build(PendingBuild& build, PairRange indexed = {});
-  void finish_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks,  // joined as search_pairs
-                         PairRange carried = {});
+  void join_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks);  // joined as search_pairs
+  void finish_list_build(PendingBuild& build, PairRange carried = {});
   bool sort_at_next_build() const;
   void after_list_build();  // the displacement since the build zeroed, the bonds re-indexed
   // Rolling resistance in this step: the store's rolling histories kept or dropped, and in a world
