@@ -36,7 +36,8 @@ TEST(PairMigration, LeavingPairsReachTheRankThatListsThem) {
   // Every rank's kept pairs, packed for the cut after the build (the list of the present positions).
   RankAccess access(w);
   std::vector<KeptPairs> kept(kRanks);
-  for (int r = 0; r < kRanks; ++r) kept[static_cast<std::size_t>(r)] = record_kept_pairs(access, rank_pairs(w.neighbors(), before, r));
+  for (int r = 0; r < kRanks; ++r)
+    kept[static_cast<std::size_t>(r)] = record_kept_pairs(access, rank_pairs(w.neighbors(), before, r));
   const Discs& d = w.discs();
   NeighborList list;
   list.skin = w.neighbors().skin;
@@ -44,7 +45,8 @@ TEST(PairMigration, LeavingPairsReachTheRankThatListsThem) {
   search_pairs(list, bins, d);
   const ThreadSplit after = testing::lopsided_cut(list, d, w.clusters(), kRanks);
   std::vector<std::vector<std::vector<double>>> sent(kRanks);  // by sender, then receiver
-  for (int r = 0; r < kRanks; ++r) sent[static_cast<std::size_t>(r)] = pack_leaving_pairs(kept[static_cast<std::size_t>(r)], bins.grid, after, r);
+  for (int r = 0; r < kRanks; ++r)
+    sent[static_cast<std::size_t>(r)] = pack_leaving_pairs(kept[static_cast<std::size_t>(r)], bins.grid, after, r);
 
   // Each rank writes what it received into its chunks: every pair of them with a history kept
   // by another rank gets that history; its own stay 0 here (its own carry gives them).
@@ -55,7 +57,8 @@ TEST(PairMigration, LeavingPairsReachTheRankThatListsThem) {
   for (int q = 0; q < kRanks; ++q) {
     std::vector<std::vector<double>> received(kRanks);
     for (int r = 0; r < kRanks; ++r)
-      if (r != q) received[static_cast<std::size_t>(r)] = sent[static_cast<std::size_t>(r)][static_cast<std::size_t>(q)];
+      if (r != q)
+        received[static_cast<std::size_t>(r)] = sent[static_cast<std::size_t>(r)][static_cast<std::size_t>(q)];
     EXPECT_TRUE(sent[static_cast<std::size_t>(q)][static_cast<std::size_t>(q)].empty());  // its own pairs stay
     const PairRange own = rank_pairs(list, after, q);
     unpack_arriving_pairs(pairs, own, received, false);

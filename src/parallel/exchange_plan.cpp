@@ -48,8 +48,8 @@ ExchangePlan make_exchange_plan(const NeighborList& L, const WallContacts& walls
 }
 
 ExchangePlan make_exchange_plan(ChunkRanks chunk_ranks, std::uint64_t build, const WallContacts& walls,
-                                const Discs& d, const Clusters& c, const ThreadSplit& cut, const Bonds& bonds,
-                                std::size_t acting_bonds) {
+                                const Discs& d, const Clusters& c, const ThreadSplit& cut,
+                                const Bonds& bonds, std::size_t acting_bonds) {
   const int ranks = cut.threads();
   const std::size_t n = d.size();
   ExchangePlan plan;

@@ -70,8 +70,8 @@ ChunkRanks list_chunk_ranks(const NeighborList& list, const ThreadSplit& cut, st
 // that integrate either disc, after the whole sums arrive (so a bond's discs are read by both:
 // ghosts).
 ExchangePlan make_exchange_plan(ChunkRanks chunk_ranks, std::uint64_t build, const WallContacts& walls,
-                                const Discs& discs, const Clusters& clusters, const ThreadSplit& cut, const Bonds& bonds,
-                                std::size_t acting_bonds);
+                                const Discs& discs, const Clusters& clusters, const ThreadSplit& cut,
+                                const Bonds& bonds, std::size_t acting_bonds);
 // The same from the whole list.
 ExchangePlan make_exchange_plan(const NeighborList& list, const WallContacts& walls, const Discs& discs,
                                 const Clusters& clusters, const ThreadSplit& cut, const Bonds& bonds,

@@ -149,7 +149,8 @@ void pack_list_pairs(RankAccess& a, const ExchangePlan& plan, int owner, std::ve
 void unpack_list_pairs(RankAccess& a, const ExchangePlan& plan, int owner, std::span<const double> in) {
   NeighborList& L = a.list();
   const PairRange theirs = rank_pairs(L, plan.cut, owner);
-  if (in.size() != theirs.end - theirs.begin) throw std::logic_error("a rank's pairs of another number than its chunks'");
+  if (in.size() != theirs.end - theirs.begin)
+    throw std::logic_error("a rank's pairs of another number than its chunks'");
   std::size_t p = theirs.begin;
   for (const double packed : in) {
     unpack_pair(packed, L.first[p], L.second[p]);

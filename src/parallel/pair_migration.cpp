@@ -22,7 +22,8 @@ std::uint64_t pair_key(std::int64_t first, std::int64_t second) {
 PairRange rank_pairs(const NeighborList& L, const ThreadSplit& cut, int rank) {
   if (L.chunk_start.empty()) return {0, 0};
   const auto r = static_cast<std::size_t>(rank);
-  return {L.chunk_start[static_cast<std::size_t>(cut.chunk[r])], L.chunk_start[static_cast<std::size_t>(cut.chunk[r + 1])]};
+  const auto chunk_start = [&](std::ptrdiff_t k) { return std::size_t{L.chunk_start[static_cast<std::size_t>(k)]}; };
+  return {chunk_start(cut.chunk[r]), chunk_start(cut.chunk[r + 1])};
 }
 
 KeptPairs record_kept_pairs(const RankAccess& a, PairRange kept) {

@@ -29,7 +29,9 @@ struct RankAccess {
 
   // A list build in two parts around the pair search, which the ranks cut between them.
   void begin_list_build(PendingBuild& build, PairRange indexed) { world.begin_list_build(build, indexed); }
-  void join_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks) { world.join_list_build(build, chunks); }
+  void join_list_build(PendingBuild& build, const std::vector<ChunkPairs>& chunks) {
+    world.join_list_build(build, chunks);
+  }
   void finish_list_build(PendingBuild& build, PairRange carried) { world.finish_list_build(build, carried); }
   // The list, for a rank to write the pairs of its chunks that others searched, or the whole
   // list gathered (rank_step.cpp).

@@ -7,11 +7,10 @@
 
 #include "boundary/wall_forces.hpp"
 #include "contact/pair_forces.hpp"
-#include "contact/store_carry.hpp"
-#include "parallel/stripe_ranks.hpp"
 #include "integrate/integrator.hpp"
 #include "parallel/owned_state.hpp"
 #include "parallel/packed_pair.hpp"
+#include "parallel/stripe_ranks.hpp"
 #include "util/soa.hpp"
 
 namespace orogen {
@@ -291,7 +290,8 @@ void RankStep::post_lists() {
     const auto [k0, k1] = kept_part(q, search_ranges_[r], search_ranges_[r + 1]);
     if (k0 == k1 || L.chunk_start[k0] == L.chunk_start[k1]) continue;
     buffer_.clear();
-    for (std::size_t p = L.chunk_start[k0]; p < L.chunk_start[k1]; ++p) buffer_.push_back(pack_pair(L.first[p], L.second[p]));
+    for (std::size_t p = L.chunk_start[k0]; p < L.chunk_start[k1]; ++p)
+      buffer_.push_back(pack_pair(L.first[p], L.second[p]));
     transport_->send(q, buffer_);
     serial_.list_values += buffer_.size();
   }

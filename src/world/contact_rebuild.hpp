@@ -25,10 +25,11 @@ BuildStats rebuild_contacts(NeighborList& list, ContactStore& store, Discs& disc
 // apart (over ranks, docs/domain-decomposition.md): begin_rebuild indexes the old histories
 // and bins (and sorts) the discs; the caller fills list.first, second and chunk_start from the
 // bins (search_pairs, or chunks searched apart and joined) and hands what the search saw to
-// take_found_pairs; finish_rebuild does the rest. rebuild_contacts is these in turn. Over ranks a rank indexes only the old pairs it kept
-// current (`indexed`) and carries histories only into the new pairs it will keep (`carried`,
-// which may be empty: carry_pair_history later, once the rank's chunks are known); the
-// histories of the pairs that change keeper travel between the ranks (parallel/pair_migration).
+// take_found_pairs; finish_rebuild does the rest. rebuild_contacts is these in turn. Over
+// ranks a rank indexes only the old pairs it kept current (`indexed`) and carries histories
+// only into the new pairs it keeps (`carried`, its chunks under the cut made from the list's
+// shape); the histories of the pairs that change keeper travel between the ranks
+// (parallel/pair_migration).
 struct PendingBuild {
   bool finite = true;  // false: a position is not finite, nothing was changed, stop
   bool sort = false;
@@ -42,8 +43,9 @@ PendingBuild begin_rebuild(const NeighborList& list, const ContactStore& store, 
 // What the search saw, kept for finish_rebuild; the chunk hints set from it (they cut the
 // ranks' shares, so they come before the rest).
 void take_found_pairs(PendingBuild& build, const PairSearchResult& search, NeighborList& list);
-BuildStats finish_rebuild(PendingBuild& build, NeighborList& list, ContactStore& store, Discs& discs, Clusters& clusters,
-                          const std::vector<Wall>& walls, const ContactLaw& law, double dt, PairRange carried = {});
+BuildStats finish_rebuild(PendingBuild& build, NeighborList& list, ContactStore& store, Discs& discs,
+                          Clusters& clusters, const std::vector<Wall>& walls, const ContactLaw& law, double dt,
+                          PairRange carried = {});
 
 // Whether the next step must rebuild: the list is stale, or some disc (displacement `moved`,
 // from integration) plus the walls moved more than half the skin since the last build.
