@@ -8,9 +8,8 @@
 
 namespace orogen {
 
-// Sets list.chunk_touching from the search's touching counts, and list.chunk_disc from the bins
-// when the discs were just sorted (`sorted`); without a sort, the old chunk_disc is kept while
-// the number of chunks is the same, else dropped.
-void set_chunk_hints(NeighborList& list, const PairSearchResult& search, const CellBins& bins, bool sorted);
+// Sets list.chunk_touching from the search's touching counts, and list.chunk_disc from the bins:
+// the count of discs in the chunks before each (exact after a sort, close without one).
+void set_chunk_hints(NeighborList& list, const PairSearchResult& search, const CellBins& bins);
 
 }  // namespace orogen

@@ -38,12 +38,11 @@ void for_each_owned_value(RankAccess& a, const ExchangePlan& plan, int owner, F&
     f(c.x[k]); f(c.y[k]); f(c.theta[k]); f(c.vx[k]); f(c.vy[k]); f(c.omega[k]);
     f(c.rot_c[k]); f(c.rot_s[k]); f(c.fx[k]); f(c.fy[k]); f(c.torque[k]);
   }
-  const auto& starts = a.neighbors.chunk_start;
-  if (!starts.empty()) {  // chunks are contiguous ranges of pairs
+  {  // its chunks: a contiguous range of pairs
     auto& xi = a.contacts.pairs.xi;
     auto& roll = a.contacts.pairs.roll;  // empty unless some contact resists rolling
-    for (std::size_t p = starts[static_cast<std::size_t>(plan.cut.chunk[r])];
-         p < starts[static_cast<std::size_t>(plan.cut.chunk[r + 1])]; ++p) {
+    const PairRange own = rank_pairs(a.neighbors, plan.cut, owner);
+    for (std::size_t p = own.begin; p < own.end; ++p) {
       f(xi[p]);
       if (!roll.empty()) f(roll[p]);
     }

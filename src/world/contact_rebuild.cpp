@@ -36,7 +36,7 @@ PendingBuild begin_rebuild(const NeighborList& L, const ContactStore& store, Dis
 
 void take_found_pairs(PendingBuild& build, const PairSearchResult& search, NeighborList& L) {
   build.search = search;
-  set_chunk_hints(L, search, build.bins, build.sort);
+  set_chunk_hints(L, search, build.bins);
 }
 
 BuildStats finish_rebuild(PendingBuild& build, NeighborList& L, ContactStore& store, Discs& d, Clusters& c,
