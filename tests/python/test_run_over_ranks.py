@@ -51,6 +51,12 @@ RUNS = {
 COMPARED = ("checkpoint.bin", "series.csv", "removals.csv", "summary.csv", "packing.h5", "bond_breaks.csv")
 # Runs whose bonds must break in the test, so that the breaks' exchange is tested.
 BREAKING = ("wedge_layered", "buiter_exp2")
+# The rank counts each run is compared on. Under OROGEN_TEST_SCALE=small (the sanitizer build,
+# where this file took 11 minutes of CI, most of it three ranks oversubscribed on two cores)
+# every run goes over 2 ranks: each stage's path over ranks still runs under the sanitizers, and
+# the stop on 3 ranks resumed on 2 (below, at any scale) keeps a middle rank with two neighbours.
+SMALL = os.environ.get("OROGEN_TEST_SCALE") == "small"
+RANK_COUNTS = {name: (2,) if SMALL else (1, 2, 3) for name in RUNS}
 
 
 def same_contents(a, b):
@@ -99,7 +105,7 @@ class RunOverRanks(unittest.TestCase):
                 if name in BREAKING:
                     with open(os.path.join(self.out(name), "bond_breaks.csv")) as f:
                         self.assertGreater(sum(1 for line in f if not line.startswith("#")), 10)
-                for ranks in (1, 2, 3):
+                for ranks in RANK_COUNTS[name]:
                     out = self.out(f"{name}_{ranks}")
                     r = self.run_ok(args + ["--out", out], ranks)
                     self.assert_same_files(self.out(name), out)
@@ -130,6 +136,8 @@ class RunOverRanks(unittest.TestCase):
         self.run_ok(["--resume", out], 2)
         self.assert_same_files(self.out("one"), out)
 
+    @unittest.skipIf(SMALL, "mpirun's teardown and the checkpoint left behind: the release suite's (no new path for "
+                     "the sanitizers: the resume on another number of ranks runs above)")
     def test_a_rank_killed_takes_the_run_down_and_it_resumes_bitwise(self):
         args = SMALL_WEDGE + ["--set", "wedge.s_end=3", "--set", "wedge.outputs=10", "--set", "wedge.erosion_height=0.9"]
         self.run_ok(args + ["--out", self.out("one")])
