@@ -63,7 +63,8 @@ struct MpiTransport::State {
   // progress) for up to kSpin, then sleeps kNap between polls. On ranks of their own cores a
   // buffer comes within the spin; where ranks share cores (more ranks than cores, or other work
   // beside the run), a rank that spun until its time slice ran out (MPI_Probe) kept the rank it
-  // waits for off the core: 3 ranks on 2 cores ran a short wedge 12x slower than 2 ranks.
+  // waits for off the core: beside another run, 3 ranks on 2 cores took 78 s for a short wedge
+  // that they now step in 6-15 s (docs/domain-decomposition.md, "Waiting for a buffer").
   void wait_for_buffer(int from, MPI_Status& status) {
     constexpr auto kSpin = std::chrono::microseconds(kSpinMicroseconds);
     constexpr auto kNap = std::chrono::microseconds(kNapMicroseconds);
