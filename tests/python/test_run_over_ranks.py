@@ -136,8 +136,8 @@ class RunOverRanks(unittest.TestCase):
         self.run_ok(["--resume", out], 2)
         self.assert_same_files(self.out("one"), out)
 
-    @unittest.skipIf(SMALL, "mpirun's teardown and the checkpoint left behind: the release suite's (no new path for "
-                     "the sanitizers: the resume on another number of ranks runs above)")
+    @unittest.skipIf(SMALL, "mpirun's teardown and the checkpoint left behind: the release suite's "
+                     "(no new path for the sanitizers: the resume on another number of ranks runs above)")
     def test_a_rank_killed_takes_the_run_down_and_it_resumes_bitwise(self):
         args = SMALL_WEDGE + ["--set", "wedge.s_end=3", "--set", "wedge.outputs=10", "--set", "wedge.erosion_height=0.9"]
         self.run_ok(args + ["--out", self.out("one")])
