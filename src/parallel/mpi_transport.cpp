@@ -19,7 +19,8 @@ namespace {
 
 constexpr int kTag = 41;  // one tag: the order between two ranks is the order sent
 // How long a receive polls before it sleeps between polls, and how long it sleeps (State::wait_for_buffer).
-constexpr int kSpinMicroseconds = 1000, kNapMicroseconds = 50;
+constexpr auto kSpin = std::chrono::microseconds(1000);
+constexpr auto kNap = std::chrono::microseconds(50);
 
 void check(int code, const char* what) {
   if (code == MPI_SUCCESS) return;
@@ -66,8 +67,6 @@ struct MpiTransport::State {
   // waits for off the core: beside another run, 3 ranks on 2 cores took 78 s for a short wedge
   // that they now step in 6-15 s (docs/domain-decomposition.md, "Waiting for a buffer").
   void wait_for_buffer(int from, MPI_Status& status) {
-    constexpr auto kSpin = std::chrono::microseconds(kSpinMicroseconds);
-    constexpr auto kNap = std::chrono::microseconds(kNapMicroseconds);
     const auto start = std::chrono::steady_clock::now();
     for (;;) {
       int arrived = 0;

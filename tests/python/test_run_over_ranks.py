@@ -51,12 +51,12 @@ RUNS = {
 COMPARED = ("checkpoint.bin", "series.csv", "removals.csv", "summary.csv", "packing.h5", "bond_breaks.csv")
 # Runs whose bonds must break in the test, so that the breaks' exchange is tested.
 BREAKING = ("wedge_layered", "buiter_exp2")
-# The rank counts each run is compared on. Under OROGEN_TEST_SCALE=small (the sanitizer build,
+# The rank counts every run is compared on. Under OROGEN_TEST_SCALE=small (the sanitizer build,
 # where this file took 11 minutes of CI, most of it three ranks oversubscribed on two cores)
 # every run goes over 2 ranks: each stage's path over ranks still runs under the sanitizers, and
 # the stop on 3 ranks resumed on 2 (below, at any scale) keeps a middle rank with two neighbours.
 SMALL = os.environ.get("OROGEN_TEST_SCALE") == "small"
-RANK_COUNTS = {name: (2,) if SMALL else (1, 2, 3) for name in RUNS}
+RANK_COUNTS = (2,) if SMALL else (1, 2, 3)
 
 
 def same_contents(a, b):
@@ -105,7 +105,7 @@ class RunOverRanks(unittest.TestCase):
                 if name in BREAKING:
                     with open(os.path.join(self.out(name), "bond_breaks.csv")) as f:
                         self.assertGreater(sum(1 for line in f if not line.startswith("#")), 10)
-                for ranks in RANK_COUNTS[name]:
+                for ranks in RANK_COUNTS:
                     out = self.out(f"{name}_{ranks}")
                     r = self.run_ok(args + ["--out", out], ranks)
                     self.assert_same_files(self.out(name), out)
