@@ -41,11 +41,13 @@ RUNS = {
     "packing": ["--set", "run.experiment=packing", "--set", "particles.packing=random_clusters",
                 "--set", "layer.length=30", "--set", "layer.thickness=6"],
     # A layered crust (named materials, a bonded weakening rock, weak base layer) in the wedge.
+    # The small wedge's lengths (its layer keeps the units' 10 d): 1,440 discs, a tile stamped.
     "wedge_layered": [os.path.join(ROOT, "examples", "wedge_layered.toml"), "--set", "wedge.s_end=0.1",
-                      "--set", "wedge.outputs=2"],
-    # Buiter et al.'s experiment 2: materials that resist rolling, bonds, a weakening base.
+                      "--set", "wedge.outputs=2"] + SMALL_WEDGE[2:],
+    # Buiter et al.'s experiment 2: materials that resist rolling, bonds, a weakening base; a
+    # third of its length (1,221 discs, about 900 bonds broken).
     "buiter_exp2": [os.path.join(ROOT, "examples", "buiter2016_exp2.toml"), "--set", "singly.shortening=0.05",
-                    "--set", "singly.outputs=2"],
+                    "--set", "singly.outputs=2", "--set", "layer.length=60"],
 }
 # The run's results: the same bits wherever it ran (the checkpoint holds the whole state).
 COMPARED = ("checkpoint.bin", "series.csv", "removals.csv", "summary.csv", "packing.h5", "bond_breaks.csv")
@@ -76,6 +78,18 @@ def orogen(args, ranks=None, env_extra=None, **kw):
 
 @unittest.skipUnless(MPIRUN, "mpirun is not installed")
 class RunOverRanks(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.references = tempfile.mkdtemp(prefix="orogen_ranks_one_")
+        cls.addClassCleanup(shutil.rmtree, cls.references, ignore_errors=True)
+
+    def one_process(self, name):
+        """RUNS[name] as one process on one thread, the reference; run once for all the tests."""
+        out = os.path.join(self.references, name)
+        if not os.path.exists(os.path.join(out, "checkpoint.bin")):
+            self.run_ok(RUNS[name] + ["--out", out])
+        return out
+
     def setUp(self):
         self.tmp = tempfile.mkdtemp(prefix="orogen_ranks_")
         self.addCleanup(shutil.rmtree, self.tmp, ignore_errors=True)
@@ -101,14 +115,14 @@ class RunOverRanks(unittest.TestCase):
     def test_one_two_and_three_ranks_give_the_bits_of_one_process(self):
         for name, args in RUNS.items():
             with self.subTest(run=name):
-                self.run_ok(args + ["--out", self.out(name)])
+                one = self.one_process(name)
                 if name in BREAKING:
-                    with open(os.path.join(self.out(name), "bond_breaks.csv")) as f:
+                    with open(os.path.join(one, "bond_breaks.csv")) as f:
                         self.assertGreater(sum(1 for line in f if not line.startswith("#")), 10)
                 for ranks in RANK_COUNTS:
                     out = self.out(f"{name}_{ranks}")
                     r = self.run_ok(args + ["--out", out], ranks)
-                    self.assert_same_files(self.out(name), out)
+                    self.assert_same_files(one, out)
                     if ranks > 1:
                         with open(os.path.join(out, "run.log")) as log:
                             self.assertIn(f"stepping over {ranks} MPI ranks", log.read())
@@ -118,23 +132,21 @@ class RunOverRanks(unittest.TestCase):
     def test_threads_inside_the_ranks_give_the_same_bits(self):
         # Two ranks of two threads each, on the threads' paths even for this small wedge.
         args = RUNS["wedge_erosion"]
-        self.run_ok(args + ["--out", self.out("one")])
         out = self.out("two_by_two")
         self.run_ok(args + ["--out", out], 2, {"OROGEN_MIN_PARALLEL_ITEMS": "16"}, threads=2)
-        self.assert_same_files(self.out("one"), out)
+        self.assert_same_files(self.one_process("wedge_erosion"), out)
         with open(os.path.join(out, "run.log")) as log:
             self.assertIn("2 thread(s)", log.read())
 
     def test_a_run_stopped_on_three_ranks_resumes_on_two(self):
         args = RUNS["wedge_erosion"]
-        self.run_ok(args + ["--out", self.out("one")])
         out = self.out("three_then_two")
         r = orogen(args + QUIET + ["--threads", "1", "--out", out, "--abort-after-outputs", "2"], 3)
         self.assertNotEqual(r.returncode, 0)
         self.assertTrue(os.path.exists(os.path.join(out, "checkpoint.bin")))
         self.assertFalse(os.path.exists(os.path.join(out, "summary.csv")))
         self.run_ok(["--resume", out], 2)
-        self.assert_same_files(self.out("one"), out)
+        self.assert_same_files(self.one_process("wedge_erosion"), out)
 
     @unittest.skipIf(SMALL, "mpirun's teardown and the checkpoint left behind: the release suite's "
                      "(no new path for the sanitizers: the resume on another number of ranks runs above)")
