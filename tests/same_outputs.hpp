@@ -42,7 +42,7 @@ inline bool small_test_scale() {
   return scale != nullptr && std::string(scale) == "small";
 }
 
-// The thread count and environment of the run that a test kills and resumes (see above).
+// The thread count of the run that a test kills and resumes (see above).
 inline std::string killed_run_threads() { return small_test_scale() ? " --threads 2" : " --threads 1"; }
 
 // Runs `orogen run ARGS` into one, two and killed under `dir`: on one thread, on two (the small
