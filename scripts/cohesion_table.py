@@ -9,13 +9,18 @@ over the picker's window and whole offset are their medians.
 
     python3 -m orogen.analysis.faults RUN            (each run of the sweep)
     scripts/cohesion_table.py runs/cohesion [runs/cohesion_h20 ...] [--figure series.png]
+        [--rows KEPT.csv ...] [--save-rows KEPT.csv]
 
 A Markdown table on standard output. Several sweeps (the same series at several resolutions)
 give one table, grouped by h0 and strength; --figure draws the wedge's height, taper and the
-forethrusts' spacing and offset against the cohesion, one colour per h0.
+forethrusts' spacing and offset against the cohesion, one colour per h0. Runs do not outlive
+the machine they ran on, so --save-rows keeps every run's row in a CSV file (of the runs read
+and of those --rows brought in) and --rows adds the rows of runs kept so (a run read from a
+folder takes the place of a kept row of the same h0, strength and seed).
 """
 
 import argparse
+import csv
 import glob
 import math
 import os
@@ -114,22 +119,60 @@ def figure(rows, path):
     fig.savefig(path, dpi=120)
 
 
-def main(sweeps, figure_path=None):
+ROW_KEYS = ("h0", "strength", "seed", "H", "alpha", "beta", "Dp", "fore", "back", "fore_dip", "back_dip", "spacing",
+            "slip", "offset", "breaks", "intact")
+
+
+def read_kept_rows(path):
+    """Rows saved by --save-rows (an empty field is an unknown value: NaN)."""
+    with open(path, newline="") as fh:
+        lines = [line for line in fh if not line.startswith("#")]
+    rows = []
+    for r in csv.DictReader(lines):
+        row_ = {k: float(r[k]) if r.get(k, "") != "" else math.nan for k in ROW_KEYS}
+        row_["seed"] = int(row_["seed"])
+        rows.append(row_)
+    return rows
+
+
+def save_rows(rows, path):
+    with open(path, "w", newline="") as fh:
+        fh.write("# Orogen cohesion series, one row per run (scripts/cohesion_table.py --save-rows); columns as in "
+                 "the script's table: h0 [d], bond strength [rho g d], seed, H [h0], pro and retro taper [deg], "
+                 "Dp or width [h0], pro forethrusts and backthrusts per output, their dips [deg], forethrust spacing, "
+                 "slip over the window and offset [h0], bonds broken and intact at the end\n")
+        w = csv.DictWriter(fh, fieldnames=ROW_KEYS, extrasaction="ignore")
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: "" if isinstance(r[k], float) and math.isnan(r[k]) else r[k] for k in ROW_KEYS})
+
+
+def merged(rows, kept):
+    """The rows of the runs read and the kept rows of other runs (by h0, strength and seed), in order."""
+    def key(r):
+        return (r["h0"], r["strength"], r["seed"])
+    read = {key(r) for r in rows}
+    return sorted(list(rows) + [r for r in kept if key(r) not in read], key=key)
+
+
+def main(sweeps, figure_path=None, kept=(), save_path=None):
     runs = sorted((os.path.dirname(p) for sweep in sweeps
                    for p in glob.glob(os.path.join(sweep, "runs", "*", "faults.csv"))),
                   key=h0_strength_seed)  # the runs whose faults were picked (those still running are left out)
+    rows = merged([row(run) for run in runs], [r for path in kept for r in read_kept_rows(path)])
+    if save_path:
+        save_rows(rows, save_path)
     print("| h0 [d] | bond strength [rho g d] | seed | H [h0] | pro taper alpha_fit [deg] | retro taper beta_fit [deg] "
           "| Dp or width [h0] | pro forethrusts per output | pro backthrusts per output | forethrust dip [deg] "
           "| backthrust dip [deg] | forethrust spacing [h0] | forethrust slip over the window [h0] "
           "| forethrust offset [h0] | bonds broken / made |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    rows = [row(run) for run in runs]
     for r in rows:
-        made = r["breaks"] + r["intact"]
+        made = r["breaks"] + r["intact"]  # NaN where a kept row does not know its bonds
         print("| %g | %g | %d | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f | %.0f | %.0f | %.2f | %.3f | %.2f | %s |" % (
             r["h0"], r["strength"], r["seed"], r["H"], r["alpha"], r["beta"], r["Dp"], r["fore"], r["back"],
             r["fore_dip"], r["back_dip"], r["spacing"], r["slip"], r["offset"],
-            "%d / %d" % (r["breaks"], made) if made else "no bonds"))
+            "-" if math.isnan(made) else "%d / %d" % (r["breaks"], made) if made else "no bonds"))
     groups = sorted({(r["h0"], r["strength"]) for r in rows})
     if len(rows) > len(groups):  # seeds: each strength's mean and the spread between seeds
         print("\n| h0 [d] | bond strength [rho g d] | cohesion against the layer's weight: strength d / h0 [rho g h0] "
@@ -154,7 +197,9 @@ def main(sweeps, figure_path=None):
 
 if __name__ == "__main__":
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("sweeps", nargs="+", help="sweep folders (their runs/*/ with faults.csv)")
+    p.add_argument("sweeps", nargs="*", help="sweep folders (their runs/*/ with faults.csv)")
     p.add_argument("--figure", default=None, help="also draw the series into this image")
+    p.add_argument("--rows", action="append", default=[], help="add the rows of runs kept in this CSV file")
+    p.add_argument("--save-rows", default=None, help="keep every run's row in this CSV file")
     a = p.parse_args()
-    main(a.sweeps, a.figure)
+    main(a.sweeps, a.figure, a.rows, a.save_rows)
