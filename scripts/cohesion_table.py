@@ -130,13 +130,17 @@ def read_kept_rows(path):
     rows = []
     for r in csv.DictReader(lines):
         row_ = {k: float(r[k]) if r.get(k, "") != "" else math.nan for k in ROW_KEYS}
-        row_["seed"] = int(row_["seed"])
+        for count in ("seed", "breaks", "intact"):  # counts stay whole numbers (where known)
+            if not math.isnan(row_[count]):
+                row_[count] = int(row_[count])
         rows.append(row_)
     return rows
 
 
 def save_rows(rows, path):
-    with open(path, "w", newline="") as fh:
+    """Written whole or not at all (a temporary file renamed): the file may be the one --rows read."""
+    temporary = path + ".tmp"
+    with open(temporary, "w", newline="") as fh:
         fh.write("# Orogen cohesion series, one row per run (scripts/cohesion_table.py --save-rows); columns as in "
                  "the script's table: h0 [d], bond strength [rho g d], seed, H [h0], pro and retro taper [deg], "
                  "Dp or width [h0], pro forethrusts and backthrusts per output, their dips [deg], forethrust spacing, "
@@ -145,6 +149,7 @@ def save_rows(rows, path):
         w.writeheader()
         for r in rows:
             w.writerow({k: "" if isinstance(r[k], float) and math.isnan(r[k]) else r[k] for k in ROW_KEYS})
+    os.replace(temporary, path)
 
 
 def merged(rows, kept):

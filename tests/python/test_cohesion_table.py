@@ -36,6 +36,13 @@ class KeptRows(unittest.TestCase):
                 else:
                     self.assertEqual(read[k], written[k], k)
         self.assertIsInstance(back[0]["seed"], int)
+        self.assertIsInstance(back[0]["breaks"], int)
+        with tempfile.TemporaryDirectory() as tmp:  # and written again, the same file
+            first, second = os.path.join(tmp, "first.csv"), os.path.join(tmp, "second.csv")
+            cohesion_table.save_rows(rows, first)
+            cohesion_table.save_rows(cohesion_table.read_kept_rows(first), second)
+            with open(first) as a, open(second) as b:
+                self.assertEqual(a.read(), b.read())
 
     def test_a_run_read_takes_the_place_of_its_kept_row(self):
         read = [a_row(40.0, 0.0, 2, 0.9)]
