@@ -34,22 +34,21 @@ inline void expect_same_outputs(const std::filesystem::path& a, const std::files
   for (const auto& f : files) EXPECT_TRUE(slurp(a / f) == slurp(b / f)) << f;
 }
 
-// OROGEN_TEST_SCALE=small (the sanitizer build, docs/testing.md): the run killed and resumed
-// steps on two threads and stands for the run on two threads too. One run fewer of three, and
-// every path (two threads, the kill, the resume) still runs under the sanitizers.
+// OROGEN_TEST_SCALE=small (the sanitizer build, docs/testing.md).
 inline bool small_test_scale() {
   const char* scale = std::getenv("OROGEN_TEST_SCALE");
   return scale != nullptr && std::string(scale) == "small";
 }
 
-// The thread count of the run that a test kills and resumes (see above).
-inline std::string killed_run_threads() { return small_test_scale() ? " --threads 2" : " --threads 1"; }
-
 // Runs `orogen run ARGS` into one, two and killed under `dir`: on one thread, on two (the small
-// runs down the parallel paths) and killed after its third output then resumed; all three must
-// hold the same results (series, removals, checkpoint and every output). At the small test scale
-// the killed run steps on two threads and there is no separate run on two.
-inline void expect_same_runs(const std::string& args, const std::filesystem::path& dir) {
+// runs down the parallel paths) and killed after output `abort_after` (after a checkpoint) then
+// resumed; all three must hold the same results (every output and the named `files`). At the
+// small test scale the killed run steps on two threads and stands for the run on two: one run
+// fewer of three, and each path (two threads, the kill, the resume) still runs under the
+// sanitizers.
+inline void expect_same_runs(const std::string& args, const std::filesystem::path& dir,
+                             const std::vector<std::string>& files = {"series.csv", "removals.csv", "checkpoint.bin"},
+                             int abort_after = 3) {
   const std::filesystem::path one = dir / "one", two = dir / "two", killed = dir / "killed";
   const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
   auto r = run_orogen("run --out '" + one.string() + "' --threads 1" + args, dir, env);
@@ -57,14 +56,16 @@ inline void expect_same_runs(const std::string& args, const std::filesystem::pat
   if (!small_test_scale()) {
     r = run_orogen("run --out '" + two.string() + "' --threads 2" + args, dir, env);
     ASSERT_EQ(r.status, 0) << r.err;
-    expect_same_outputs(one, two, {"series.csv", "removals.csv", "checkpoint.bin"});
+    expect_same_outputs(one, two, files);
   }
-  r = run_orogen("run --out '" + killed.string() + "'" + killed_run_threads() + " --abort-after-outputs 3" + args,
+  const std::string threads = small_test_scale() ? " --threads 2" : " --threads 1";
+  r = run_orogen("run --out '" + killed.string() + "'" + threads + " --abort-after-outputs " +
+                     std::to_string(abort_after) + args,
                  dir, env);
   ASSERT_EQ(r.status, 137) << r.err;
   r = run_orogen("run --resume '" + killed.string() + "'", dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  expect_same_outputs(one, killed, {"series.csv", "removals.csv", "checkpoint.bin"});
+  expect_same_outputs(one, killed, files);
 }
 
 }  // namespace orogen::testing

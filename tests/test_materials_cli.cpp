@@ -18,9 +18,7 @@ namespace fs = std::filesystem;
 using namespace orogen;
 using orogen::testing::run_orogen;
 using orogen::testing::slurp;
-using orogen::testing::expect_same_outputs;
-using orogen::testing::killed_run_threads;
-using orogen::testing::small_test_scale;
+using orogen::testing::expect_same_runs;
 
 namespace {
 
@@ -88,25 +86,10 @@ std::size_t breakages(const fs::path& run) {
 
 TEST_F(MaterialsCli, BondsBreakTheSameForOneAndTwoThreadsAndAcrossAResume) {
   const fs::path config = write("layered.toml", kLayered);
-  const fs::path one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
-  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";  // two threads take the parallel paths
-  auto r = run_orogen("run '" + config.string() + "' --out '" + one.string() + "' --threads 1", dir_, env);
-  ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_GT(breakages(one), 100u);
-  if (!small_test_scale()) {  // at the small scale the killed run steps on two threads
-    r = run_orogen("run '" + config.string() + "' --out '" + two.string() + "' --threads 2", dir_, env);
-    ASSERT_EQ(r.status, 0) << r.err;
-    expect_same_outputs(one, two, kLayeredFiles);
-  }
-
+  const fs::path one = dir_ / "one";
   // Killed after its third output (checkpoint after the second): bonds broke on both sides.
-  r = run_orogen("run '" + config.string() + "' --out '" + killed.string() + "'" + killed_run_threads() +
-                     " --abort-after-outputs 3",
-                 dir_, env);
-  ASSERT_EQ(r.status, 137) << r.err;
-  r = run_orogen("run --resume '" + killed.string() + "'", dir_);
-  ASSERT_EQ(r.status, 0) << r.err;
-  expect_same_outputs(one, killed, kLayeredFiles);
+  ASSERT_NO_FATAL_FAILURE(expect_same_runs(" '" + config.string() + "'", dir_, kLayeredFiles));
+  EXPECT_GT(breakages(one), 100u);
 
   // The outputs carry the materials: each disc's material and slip, the names in order.
   const SnapshotReader reader(one / "snapshots.h5");
@@ -127,22 +110,13 @@ TEST_F(MaterialsCli, BondsBreakTheSameForOneAndTwoThreadsAndAcrossAResume) {
 // rolling histories in the checkpoint; and it is not the wedge without it.
 TEST_F(MaterialsCli, RollingResistanceIsTheSameForOneAndTwoThreadsAndAcrossAResume) {
   const fs::path config = write("layered.toml", kLayered);
-  const std::string rolling = " --set contact.rolling_friction=0.2";
-  const fs::path plain = dir_ / "plain", one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
-  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
-  const std::string run = "run '" + config.string() + "' --out '";
-  ASSERT_EQ(run_orogen(run + plain.string() + "' --threads 1", dir_, env).status, 0);
-  ASSERT_EQ(run_orogen(run + one.string() + "' --threads 1" + rolling, dir_, env).status, 0);
-  if (!small_test_scale()) {  // at the small scale the killed run steps on two threads
-    ASSERT_EQ(run_orogen(run + two.string() + "' --threads 2" + rolling, dir_, env).status, 0);
-    expect_same_outputs(one, two, kLayeredFiles);
-  }
-  auto r = run_orogen(run + killed.string() + "'" + killed_run_threads() + " --abort-after-outputs 3" + rolling, dir_,
-                      env);
-  ASSERT_EQ(r.status, 137) << r.err;
-  r = run_orogen("run --resume '" + killed.string() + "'", dir_);
-  ASSERT_EQ(r.status, 0) << r.err;
-  expect_same_outputs(one, killed, kLayeredFiles);
+  const fs::path plain = dir_ / "plain", one = dir_ / "one";
+  ASSERT_EQ(run_orogen("run '" + config.string() + "' --out '" + plain.string() + "' --threads 1", dir_,
+                       "OROGEN_MIN_PARALLEL_ITEMS=16 ")
+                .status,
+            0);
+  ASSERT_NO_FATAL_FAILURE(
+      expect_same_runs(" '" + config.string() + "' --set contact.rolling_friction=0.2", dir_, kLayeredFiles));
   EXPECT_NE(slurp(plain / "series.csv"), slurp(one / "series.csv"));
 }
 
@@ -154,25 +128,10 @@ TEST_F(MaterialsCli, ABrazilianTestIsTheSameForOneAndTwoThreadsAndAcrossAResume)
       " --set materials.rock.bond_tensile_strength=5 --set biaxial.material=rock --set particles.packing=random_discs"
       " --set biaxial.width=12 --set biaxial.height=12 --set biaxial.strain_end=0.02 --set biaxial.sigma3=0.5"
       " --set biaxial.outputs=20 --set output.checkpoint_every=1 --set output.progress=never";
-  const fs::path one = dir_ / "one", two = dir_ / "two", killed = dir_ / "killed";
-  const std::string env = "OROGEN_MIN_PARALLEL_ITEMS=16 ";
-  ASSERT_EQ(run_orogen("run --out '" + one.string() + "' --threads 1" + args, dir_, env).status, 0);
-  std::vector<fs::path> others{killed};
-  if (!small_test_scale()) {  // at the small scale the killed run steps on two threads
-    ASSERT_EQ(run_orogen("run --out '" + two.string() + "' --threads 2" + args, dir_, env).status, 0);
-    others.push_back(two);
-  }
-  ASSERT_EQ(run_orogen("run --out '" + killed.string() + "'" + killed_run_threads() + " --abort-after-outputs 25" + args,
-                       dir_, env)
-                .status,
-            137);
-  ASSERT_EQ(run_orogen("run --resume '" + killed.string() + "'", dir_).status, 0);
-  EXPECT_GT(breakages(one), 10u);
-  for (const fs::path& other : others) {
-    SCOPED_TRACE(other.string());
-    expect_same_outputs(one, other, kLayeredFiles);
-    EXPECT_EQ(slurp(one / "summary.csv"), slurp(other / "summary.csv"));
-  }
+  std::vector<std::string> files = kLayeredFiles;
+  files.push_back("summary.csv");
+  ASSERT_NO_FATAL_FAILURE(expect_same_runs(args, dir_, files, 25));
+  EXPECT_GT(breakages(dir_ / "one"), 10u);
 }
 
 TEST_F(MaterialsCli, BadMaterialsAndUnitsExitWith2AndWriteNothing) {
